@@ -1,0 +1,140 @@
+#include "lattice/height_field.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "src/rng.h"
+
+namespace sandpic {
+
+HeightField::HeightField(int columns, double column_width_px, double ceiling_px, std::vector<SlopeRule> rules)
+    : h_(size_t(columns + 2 * kPad), INFINITY),
+      columns_(columns),
+      stacks_(size_t(columns)),
+      width_(column_width_px),
+      ceiling_(ceiling_px) {
+  std::fill(h_.begin() + kPad, h_.end() - kPad, 0.0);
+  for (const SlopeRule& r : rules) {
+    Slopes s{r, {}};
+    s.rule.window = std::clamp(r.window, 1, kMaxWindow);
+    for (auto& bits : s.steep) bits.assign(size_t(columns + 63) / 64, 0);  // a flat floor
+    slopes_.push_back(std::move(s));
+  }
+}
+
+double HeightField::max_height() const { return *std::max_element(h_.begin() + kPad, h_.end() - kPad); }
+
+// Branch-free over the window (which k decides is unpredictable); the walls
+// are padding of infinite height.
+bool HeightField::unstable(int c, int dir, const SlopeRule& rule) const {
+  const double* p = h_.data() + kPad + c;
+  const double top = *p, t = rule.drop_per_column;
+  bool any = false;
+  for (int k = 1; k <= rule.window; ++k) any |= top - p[dir * k] > k * t;
+  return any;
+}
+
+// How much the steepest look-ahead slope exceeds the rule's, per column.
+double HeightField::excess(int c, int dir, const SlopeRule& rule) const {
+  double worst = -INFINITY;
+  for (int k = 1; k <= rule.window; ++k) worst = std::max(worst, (height(c) - height(c + dir * k)) / k);
+  return worst - rule.drop_per_column;
+}
+
+bool HeightField::steep(const Slopes& s, int c, int dir) const {
+  if (c < 0 || c >= columns_) return false;
+  return (s.steep[dir > 0 ? 0 : 1][size_t(c) >> 6] >> (c & 63)) & 1;
+}
+
+// The first column from c on, going dir, that is not steep toward dir.
+int HeightField::next_resting(const Slopes& s, int c, int dir) const {
+  const std::vector<uint64_t>& bits = s.steep[dir > 0 ? 0 : 1];
+  size_t w = size_t(c) >> 6;
+  if (dir > 0) {
+    uint64_t free = ~bits[w] & (~0ull << (c & 63));
+    while (free == 0) free = ~bits[++w];  // the last column is never steep toward its wall
+    return int(w * 64 + size_t(std::countr_zero(free)));
+  }
+  uint64_t free = ~bits[w] & (~0ull >> (63 - (c & 63)));
+  while (free == 0) free = ~bits[--w];
+  return int(w * 64 + 63 - size_t(std::countl_zero(free)));
+}
+
+int HeightField::settle(int c, int r, uint64_t seed, uint64_t id) const {
+  const Slopes& s = slopes_[size_t(r)];
+  bool right = steep(s, c, +1), left = steep(s, c, -1);
+  if (!right && !left) return c;
+  int dir = right && !left ? 1 : left && !right ? -1 : 0;
+  if (dir == 0) {  // on a peak: the steeper side, a coin if equal
+    double er = excess(c, +1, s.rule), el = excess(c, -1, s.rule);
+    dir = er > el ? 1 : el > er ? -1 : (uniform(seed, Stream::LatticeSlide, id) < 0.5 ? -1 : 1);
+  }
+  // A grain slides on in its direction while that side is too steep, then
+  // keeps going downhill for its run-out; in a pit it may turn.
+  for (int turns = 0;;) {
+    c = next_resting(s, c, dir);
+    for (int coast = s.rule.runout; coast > 0 && height(c + dir) < height(c) && !steep(s, c, -dir); --coast)
+      c += dir;
+    if (steep(s, c, dir)) continue;
+    if (turns++ < 2 && steep(s, c, -dir)) {
+      dir = -dir;
+      continue;
+    }
+    return c;
+  }
+}
+
+int HeightField::room_near(int c, double rise) const {
+  for (int d = 0; d < columns(); ++d)
+    for (int j : {c - d, c + d})
+      if (j >= 0 && j < columns() && height(j) + rise <= ceiling_) return j;
+  return -1;
+}
+
+// Column c rose. It may have become steep on either side; the columns within
+// the window that look at it can only have become less steep, so only those
+// marked steep need a second look.
+void HeightField::refresh(Slopes& s, int c) {
+  const int k = s.rule.window;
+  for (int side = 0; side < 2; ++side) {
+    const int dir = side == 0 ? 1 : -1;
+    std::vector<uint64_t>& bits = s.steep[side];
+    for (int j = c, end = c - dir * (k + 1); j != end; j -= dir) {
+      if (j < 0 || j >= columns_) break;
+      uint64_t bit = 1ull << (j & 63);
+      uint64_t& word = bits[size_t(j) >> 6];
+      if (j != c && !(word & bit)) continue;
+      word = unstable(j, dir, s.rule) ? word | bit : word & ~bit;
+    }
+  }
+}
+
+double HeightField::deposit(int c, uint8_t cls, double area_px) {
+  double base = height(c), rise = area_px / width_;
+  h_[size_t(c + kPad)] = base + rise;
+  stacks_[size_t(c)].push_back(Deposit{float(base + rise), cls});
+  for (Slopes& s : slopes_) refresh(s, c);
+  return base + rise / 2;
+}
+
+cv::Mat HeightField::class_map(int width, int height, uint8_t empty) const {
+  cv::Mat map(height, width, CV_8U, cv::Scalar(empty));
+  const double columns_per_px = 1.0 / width_;
+  tbb::parallel_for(0, width, [&](int x) {
+    int c = std::min(columns() - 1, int((x + 0.5) * columns_per_px));
+    const std::vector<Deposit>& stack = stacks_[size_t(c)];
+    size_t k = 0;
+    for (int i = 0; i < height; ++i) {  // pixel rows from the floor up
+      double centre = i + 0.5;
+      while (k < stack.size() && stack[k].top <= centre) ++k;
+      if (k == stack.size()) break;
+      map.at<uint8_t>(height - 1 - i, x) = stack[k].cls;
+    }
+  });
+  return map;
+}
+
+}  // namespace sandpic

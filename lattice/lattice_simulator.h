@@ -1,0 +1,20 @@
+#pragma once
+// The lattice backend: grains leave their unit's outlet in falling order and
+// settle one at a time on a height field by angle-of-repose rules per class,
+// so the strata of a pile are its former surfaces (paper Fig. 6b).
+#include <memory>
+
+#include "lattice/height_field.h"
+#include "src/simulator.h"
+
+namespace sandpic {
+
+// paper §7, Fig. 9: the angle of repose grows with friction, and big grains
+// pile steeper than small ones: tan θ_k = repose_gain_k · friction, unless
+// lattice.repose_deg sets θ_k directly.
+double repose_angle_deg(const Scene& s, int k);
+SlopeRule slope_rule(const Scene& s, int k);
+
+std::unique_ptr<Simulator> make_lattice_simulator();
+
+}  // namespace sandpic

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Makes the input pictures of examples/ with sandpic itself (paper §10 takes a
+# sand picture as the input of another): never downloaded.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BIN=${1:-build/sandpic}
+# A 1000x350 sand picture, the size of the default initialization region.
+"$BIN" render -o examples/inputs/sand-picture.png --seed 11 \
+  --set window.height=350 --set region.height=160 --set segment.semi_major_max=110 \
+  --set 'grains.colors=["#202020", "#6a6a6a", "#b0b0b0", "#f4f4f4"]' --set 'render.background_color="#d8d8d8"'

@@ -1,0 +1,196 @@
+#include "src/cli/commands.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include <CLI/CLI.hpp>
+#include <opencv2/core/utils/logger.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <tbb/global_control.h>
+
+#include "src/errors.h"
+#include "src/output.h"
+#include "src/pipeline.h"
+
+namespace sandpic {
+namespace {
+
+// What every command that runs a scene accepts.
+struct SceneOptions {
+  std::string scene_path;
+  std::string mode;
+  std::optional<uint64_t> seed, layout_seed, physics_seed;
+  double scale = 1;
+  std::vector<std::string> sets;
+  int threads = 0;
+
+  void add_to(CLI::App* cmd) {
+    cmd->add_option("scene", scene_path, "scene file (JSON); none: the built-in default scene");
+    cmd->add_option("--mode", mode, "lattice | dem (the scene's key 'mode')");
+    cmd->add_option("--seed", seed, "sets the layout and the physics seed");
+    cmd->add_option("--layout-seed", layout_seed, "tessellation, colours, ellipses, falling-order ties");
+    cmd->add_option("--physics-seed", physics_seed, "the simulation's own randomness");
+    cmd->add_option("--scale", scale, "multiplies every length in pixels (grains go by scale²)");
+    cmd->add_option("--set", sets, "key.path=value, applied after the scene file")->take_all();
+    cmd->add_option("--threads", threads, "worker threads (0: all cores); the picture does not depend on it");
+  }
+
+  Scene build() const {
+    Scene s = scene_path.empty() ? Scene{} : load_scene(scene_path);
+    for (const std::string& a : sets) apply_setting(s, a);
+    if (!mode.empty()) apply_setting(s, "mode=" + mode);
+    if (seed) s.seed = *seed, s.layout_seed.reset(), s.physics_seed.reset();
+    if (layout_seed) s.layout_seed = *layout_seed;
+    if (physics_seed) s.physics_seed = *physics_seed;
+    if (scale != 1) apply_scale(s, scale);
+    validate(s);
+    return s;
+  }
+
+  std::string reproduce(const Scene& s) const {
+    return "scene " + (scene_path.empty() ? std::string("(default)") : scene_path) + ", layout seed " +
+           std::to_string(s.layout()) + ", physics seed " + std::to_string(s.physics_rng());
+  }
+};
+
+std::unique_ptr<tbb::global_control> limit_threads(int n) {
+  if (n <= 0) return nullptr;
+  return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, size_t(n));
+}
+
+struct RenderCommand {
+  SceneOptions scene;
+  std::string out, stats, stages;
+
+  void add_to(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand("render", "render a scene to a PNG picture");
+    scene.add_to(cmd);
+    cmd->add_option("-o,--out", out, "output PNG")->required();
+    cmd->add_option("--stats", stats, "write statistics (grain counts, timings) as JSON");
+    cmd->add_option("--stages", stages, "write the intermediate pictures of paper Fig. 2 into this folder");
+    cmd->callback([this] { run(); });
+  }
+
+  void run() {
+    Scene s = scene.build();
+    check_writable(out);
+    if (!stats.empty()) check_writable(stats);
+    if (!stages.empty())
+      check_writable(std::filesystem::is_directory(stages) ? stages + "/5-picture.png" : stages);
+    auto threads = limit_threads(scene.threads);
+    auto sim = make_simulator(s);
+    RunOptions opt{!stages.empty(), Progress::stderr_is_terminal()};
+    RunResult r;
+    try {
+      r = run_pipeline(s, *sim, opt);
+    } catch (const SimulationError& e) {
+      throw SimulationError(std::string(e.what()) + "; to reproduce: " + scene.reproduce(s));
+    }
+    write_atomic(out, std::string_view(reinterpret_cast<const char*>(r.png.data()), r.png.size()));
+    if (!stats.empty()) write_atomic(stats, r.stats.dump(2) + "\n");
+    if (!stages.empty()) {
+      check_folder(stages);
+      for (auto& [name, img] : r.stages) {
+        std::vector<uchar> png;
+        cv::imencode(".png", img, png);
+        write_atomic(stages + "/" + name, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+      }
+    }
+  }
+};
+
+struct SceneCommand {
+  bool keys = false;
+  void add_to(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand("scene", "print the complete default scene as JSON");
+    cmd->add_flag("--keys", keys, "list every key with its meaning instead");
+    cmd->callback([this] {
+      if (!keys) {
+        std::cout << to_json(Scene{}).dump(2) << "\n";
+        return;
+      }
+      for (const Field& f : scene_fields()) std::cout << f.path << "\t" << f.help << "\n";
+    });
+  }
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+// Speed is shown by medians of repeated in-process runs, never by a timed test.
+struct BenchCommand {
+  SceneOptions scene;
+  int runs = 9;
+  void add_to(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand("bench", "time the pipeline on a scene: medians of repeated runs");
+    scene.add_to(cmd);
+    cmd->add_option("--runs", runs, "timed runs (after one warm-up run)")->check(CLI::Range(1, 1000));
+    cmd->callback([this] { run(); });
+  }
+  void run() {
+    Scene s = scene.build();
+    auto threads = limit_threads(scene.threads);
+    auto sim = make_simulator(s);
+    std::vector<std::string> keys = {"init_s", "segment_s", "order_s", "simulate_s", "render_s", "encode_s", "total_s"};
+    std::map<std::string, std::vector<double>> t;
+    int64_t grains = 0;
+    for (int i = 0; i <= runs; ++i) {
+      RunResult r = run_pipeline(s, *sim, RunOptions{});
+      grains = r.stats["grains"]["total"];
+      if (i == 0) continue;  // warm-up: page faults, TBB start-up
+      for (auto& k : keys) t[k].push_back(r.stats["timing"][k].get<double>());
+    }
+    std::printf("sandpic bench: %s, %dx%d window, %lld grains, %d runs\n", s.mode == Mode::Lattice ? "lattice" : "dem",
+                s.window.width, s.window.height, (long long)grains, runs);
+    std::printf("%-12s %10s %10s %10s %8s\n", "stage", "median_s", "min_s", "max_s", "share");
+    double total = median(t["total_s"]);
+    for (auto& k : keys)
+      std::printf("%-12s %10.4f %10.4f %10.4f %7.1f%%\n", k.c_str(), median(t[k]),
+                  *std::min_element(t[k].begin(), t[k].end()), *std::max_element(t[k].begin(), t[k].end()),
+                  100 * median(t[k]) / total);
+    std::printf("grains per second (simulate): %.3g\n", double(grains) / median(t["simulate_s"]));
+  }
+};
+
+}  // namespace
+
+int cli_main(int argc, char** argv) {
+  // OpenCV's own warnings would break the one-line error promise.
+  cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
+  CLI::App app{"sandpic: moving sand pictures, after 'Computer Simulation and Generation of Moving Sand Pictures'"};
+  app.require_subcommand(1);
+  RenderCommand render;
+  SceneCommand scene;
+  BenchCommand bench;
+  render.add_to(app);
+  scene.add_to(app);
+  bench.add_to(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "sandpic: %s (see sandpic --help)\n", e.what());
+    return 2;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "sandpic: error: %s\n", e.what());
+    return 2;
+  } catch (const SimulationError& e) {
+    std::fprintf(stderr, "sandpic: simulation failed: %s\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sandpic: simulation failed: %s\n", e.what());
+    return 3;
+  }
+  return 0;
+}
+
+}  // namespace sandpic

@@ -1,0 +1,22 @@
+#pragma once
+// User-fixable problems are values with a message, reported once at the CLI
+// edge with the right exit code (DEVELOPERS.md, Standards).
+#include <stdexcept>
+#include <string>
+
+namespace sandpic {
+
+// Bad scene, bad key, missing or corrupt file: exit code 2.
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// A scene key with a bad value; the message names the key path.
+InputError key_error(const std::string& path, const std::string& what);
+
+// A simulation that failed or diverged: exit code 3.
+struct SimulationError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace sandpic

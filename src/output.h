@@ -1,0 +1,15 @@
+#pragma once
+// Output files are written whole or not at all: to a temporary file beside
+// the target, then renamed over it, so a failure never leaves a partial file
+// nor touches an existing one.
+#include <string>
+#include <string_view>
+
+namespace sandpic {
+
+// Throws InputError naming the path if its folder is missing or not writable.
+void check_writable(const std::string& path);
+void check_folder(const std::string& dir);  // creates it if missing
+void write_atomic(const std::string& path, std::string_view bytes);
+
+}  // namespace sandpic

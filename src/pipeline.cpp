@@ -1,0 +1,92 @@
+#include "src/pipeline.h"
+
+#include <chrono>
+#include <cmath>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "src/errors.h"
+#include "src/render.h"
+
+namespace sandpic {
+namespace {
+
+class Clock {
+ public:
+  double lap() {
+    auto now = std::chrono::steady_clock::now();
+    double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+  double total() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
+};
+
+// Every grain accounted for: a settled grain lies inside the window.
+int64_t grains_in_picture(const Scene& s, const SimResult& r) {
+  int64_t n = 0;
+  for (size_t i = 0; i < r.x.size(); ++i)
+    if (std::isfinite(r.x[i]) && std::isfinite(r.y[i]) && r.x[i] >= 0 && r.x[i] <= s.window.width && r.y[i] >= 0 &&
+        r.y[i] <= s.window.height)
+      ++n;
+  return n;
+}
+
+std::string mode_name(Mode m) { return m == Mode::Lattice ? "lattice" : "dem"; }
+
+}  // namespace
+
+RunResult run_pipeline(const Scene& s, Simulator& sim, const RunOptions& opt) {
+  validate(s);
+  Clock clock;
+  ordered_json timing;
+  cv::Mat background = load_background(s);  // read early: a bad file fails before the work
+  Initialization init = initialize(s);
+  timing["init_s"] = clock.lap();
+  Segmentation seg = segment(s, init.tessellation);
+  timing["segment_s"] = clock.lap();
+  FallingOrder order = falling_order(seg, init.grains, s.layout());
+  timing["order_s"] = clock.lap();
+
+  Progress progress(opt.progress);
+  SimResult sim_result = sim.simulate(SimInput{s, init.grains, seg, order}, progress);
+  timing["simulate_s"] = clock.lap();
+
+  const int64_t total = init.grains.size(), in_picture = grains_in_picture(s, sim_result);
+  if (in_picture != total)
+    throw SimulationError(std::to_string(total - in_picture) + " of " + std::to_string(total) +
+                          " grains did not settle inside the window (seed " + std::to_string(s.seed) + ")");
+
+  RunResult out;
+  out.picture = render(s, sim_result.class_map, background);
+  timing["render_s"] = clock.lap();
+  if (!cv::imencode(".png", out.picture, out.png)) throw SimulationError("PNG encoding failed");
+  timing["encode_s"] = clock.lap();
+  if (opt.stages) {
+    out.stages = stage_pictures(s, init, seg, order);
+    out.stages.emplace_back("5-picture.png", out.picture);
+    timing["stages_s"] = clock.lap();
+  }
+  timing["total_s"] = clock.total();
+
+  ordered_json& st = out.stats;
+  st["mode"] = mode_name(s.mode);
+  st["seed"] = s.seed;
+  st["layout_seed"] = s.layout();
+  st["physics_seed"] = s.physics_rng();
+  st["window"] = {s.window.width, s.window.height};
+  st["region"] = {s.window.width, s.region.height};
+  st["units"] = seg.units.size();
+  st["grains"]["total"] = total;
+  st["grains"]["per_class"] = init.grains.per_class();
+  st["grains"]["released"] = int64_t(order.grain.size());
+  st["grains"]["in_picture"] = in_picture;
+  st["timing"] = timing;
+  st["backend"] = sim_result.stats;
+  return out;
+}
+
+}  // namespace sandpic

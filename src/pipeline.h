@@ -1,0 +1,27 @@
+#pragma once
+// The pipeline: initialize → segment → order → simulate → render, each a free
+// function over plain data, timed into the stats (paper Table 1's columns).
+#include <vector>
+
+#include "src/simulator.h"
+#include "src/stages.h"
+
+namespace sandpic {
+
+struct RunOptions {
+  bool stages = false;    // keep the intermediate pictures of Fig. 2
+  bool progress = false;  // draw a progress bar on stderr
+};
+
+struct RunResult {
+  cv::Mat picture;          // 8-bit BGR, window size
+  std::vector<uchar> png;   // the picture, encoded
+  ordered_json stats;
+  Stages stages;
+};
+
+// Throws InputError (bad scene or file) or SimulationError (a grain lost, a
+// NaN): nothing is returned that should not be written.
+RunResult run_pipeline(const Scene& s, Simulator& sim, const RunOptions& opt);
+
+}  // namespace sandpic

@@ -1,0 +1,26 @@
+#pragma once
+// A progress bar for long work, on stderr when it is a terminal only.
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+namespace sandpic {
+
+class Progress {
+ public:
+  explicit Progress(bool enabled) : enabled_(enabled) {}
+  static bool stderr_is_terminal();
+
+  void start(const std::string& label, int64_t total);
+  void update(int64_t done);  // cheap: redraws at most ten times a second
+  void finish();
+
+ private:
+  void draw(int64_t done);
+  bool enabled_;
+  std::string label_;
+  int64_t total_ = 0;
+  std::chrono::steady_clock::time_point start_, last_;
+};
+
+}  // namespace sandpic

@@ -1,0 +1,119 @@
+#pragma once
+// The one Scene struct: every parameter of the paper with its default here and
+// its key, range and help text beside it in scene_fields.cpp.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sandpic {
+
+constexpr int kClasses = 4;  // paper §4.1: grain classes S1..S4
+
+struct Rgb {
+  uint8_t r = 0, g = 0, b = 0;
+  bool operator==(const Rgb&) const = default;
+};
+
+enum class InitMethod { Tessellation, Halftone };
+enum class TessellationKind { Uniform, Varying, Strips };
+enum class SegmentMethod { Ellipses, Explicit, Cells };
+enum class Mode { Lattice, Dem };
+
+// An ellipse of the segmentation, in window pixels (x right, y down).
+struct EllipseSpec {
+  double cx = 0, cy = 0, a = 1, b = 1, angle_deg = 0;
+};
+
+// paper §3: "users may further edit colors in the cells". Classes are 1-based
+// in scene files (S1..S4), 0-based in code.
+struct CellOverride {
+  int cell = 0;
+  int dominant = 0;
+  int secondary = 1;
+};
+
+struct Scene {
+  std::string description;  // free text for people; the pipeline ignores it
+  struct Window {
+    int width = 1000;  // paper §4.1
+    int height = 700;
+  } window;
+  struct Region {
+    int height = 350;  // paper §4.1: initialization region, top of the window
+  } region;
+  struct Units {
+    // One grain per pixel of the region; a pixel is this many mm, so the
+    // region's grains packed at `packing` cover about the region's area.
+    double mm_per_pixel = 0.18;
+    double packing = 0.82;
+  } units;
+  struct Grains {
+    std::array<double, kClasses> density_g_cm3{3.2, 3.2, 2.7, 2.7};  // paper §4.1
+    std::array<double, kClasses> diameter_mm{0.2, 0.2, 0.1, 0.1};
+    std::array<double, kClasses> proportions{3.0 / 8, 3.0 / 8, 1.0 / 8, 1.0 / 8};
+    // C1..C4: dark, heavy S1 at the bottom of a pile reads as rock.
+    std::array<Rgb, kClasses> colors{Rgb{36, 40, 66}, Rgb{168, 84, 52}, Rgb{226, 178, 96},
+                                     Rgb{246, 240, 226}};
+  } grains;
+  struct Init {
+    InitMethod method = InitMethod::Tessellation;
+    std::string image;  // halftone input; loaded only for method=halftone
+    TessellationKind tessellation = TessellationKind::Varying;
+    double cell_width = 50, cell_height = 35;            // uniform (Fig. 4)
+    double row_height_min = 12, row_height_max = 44;     // varying (Fig. 5), strips
+    double cell_width_min = 24, cell_width_max = 130;    // varying
+    double dominant_share = 0.8;                         // paper §4.4
+    std::vector<CellOverride> cell_overrides;
+  } init;
+  struct Segment {
+    SegmentMethod method = SegmentMethod::Ellipses;
+    double semi_major_min = 45, semi_major_max = 150;  // top row, bottom row
+    double eccentricity_min = 0.45, eccentricity_max = 0.65;
+    std::vector<EllipseSpec> ellipses;  // method=explicit
+  } segment;
+  struct Order {
+    double row_tolerance = 20;  // px: centres this close in y share a row (§6)
+  } order;
+  struct Release {
+    double outlet_width_mm = 15;  // paper §7
+    double gravity_m_s2 = 9.81;
+  } release;
+  Mode mode = Mode::Lattice;
+  uint64_t seed = 1;
+  std::optional<uint64_t> layout_seed;   // null: same as seed
+  std::optional<uint64_t> physics_seed;  // null: same as seed
+  struct Physics {
+    double friction = 0.4;     // paper §7: static = dynamic = 0.4
+    double restitution = 0.1;  // paper §7
+  } physics;
+  struct Lattice {
+    double resolution = 1.0;  // height-field columns per pixel
+    // tan(angle of repose) = repose_gain * friction, per class (Fig. 9:
+    // steeper with friction, bigger grains steeper).
+    std::array<double, kClasses> repose_gain{1.45, 1.45, 1.2, 1.2};
+    std::optional<std::array<double, kClasses>> repose_deg;  // overrides the gain
+    std::array<double, kClasses> runout_px{2, 2, 3, 3};  // extra travel down a slope
+    int window_columns = 0;  // non-local rule width; 0: chosen per class
+  } lattice;
+  struct Render {
+    std::string background;  // image for the emptied upper part (§10, Fig. 14g)
+    Rgb background_color{248, 246, 240};
+  } render;
+
+  std::string base_dir;  // folder of the scene file; relative paths start here
+
+  uint64_t layout() const { return layout_seed.value_or(seed); }
+  uint64_t physics_rng() const { return physics_seed.value_or(seed); }
+  std::string resolve(const std::string& path) const;
+};
+
+// Grain geometry in pixels, derived from the scene's mm values.
+double px_per_mm(const Scene& s);
+// Area a grain of class k takes in a pile, in px² (diameter² · π/4 / packing):
+// a big grain covers four times a small one, in both modes.
+double grain_area_px(const Scene& s, int k);
+double grain_diameter_px(const Scene& s, int k);
+
+}  // namespace sandpic

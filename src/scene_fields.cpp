@@ -1,0 +1,350 @@
+// Every scene key: its path, type, range and help, next to the Scene field it
+// sets (defaults live in scene.h). Keys are listed in the order a scene file
+// is read by a person: geometry, grains, the pipeline's stages, then output.
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "src/errors.h"
+#include "src/scene_file.h"
+
+namespace sandpic {
+namespace {
+
+std::string num(double d) {
+  std::ostringstream o;
+  o.precision(10);
+  o << d;
+  return o.str();
+}
+
+double as_number(const json& v, const std::string& path) {
+  if (!v.is_number()) throw key_error(path, std::string("expected a number, got ") + v.type_name());
+  double d = v.get<double>();
+  if (!std::isfinite(d)) throw key_error(path, "must be a finite number");
+  return d;
+}
+
+double in_range(const json& v, const std::string& path, double lo, double hi) {
+  double d = as_number(v, path);
+  if (d < lo || d > hi)
+    throw key_error(path, "must be in [" + num(lo) + ", " + num(hi) + "], got " + num(d));
+  return d;
+}
+
+long long as_integer(const json& v, const std::string& path, double lo, double hi) {
+  double d = in_range(v, path, lo, hi);
+  if (d != std::floor(d)) throw key_error(path, "must be a whole number, got " + num(d));
+  return static_cast<long long>(d);
+}
+
+template <class Acc>
+Field real(std::string path, Acc acc, double lo, double hi, std::string help, bool px = false) {
+  return {path, help, px, [acc](const Scene& s) { return ordered_json(acc(const_cast<Scene&>(s))); },
+          [acc, path, lo, hi](Scene& s, const json& v) { acc(s) = in_range(v, path, lo, hi); }};
+}
+
+template <class Acc>
+Field integer(std::string path, Acc acc, double lo, double hi, std::string help, bool px = false) {
+  return {path, help, px, [acc](const Scene& s) { return ordered_json(acc(const_cast<Scene&>(s))); },
+          [acc, path, lo, hi](Scene& s, const json& v) {
+            acc(s) = static_cast<std::remove_reference_t<decltype(acc(s))>>(as_integer(v, path, lo, hi));
+          }};
+}
+
+constexpr double kMaxSeed = 9007199254740991.0;  // 2^53 - 1: exact in every JSON reader
+
+uint64_t as_seed(const json& v, const std::string& path) {
+  return static_cast<uint64_t>(as_integer(v, path, 0, kMaxSeed));
+}
+
+template <class Acc>
+Field optional_seed(std::string path, Acc acc, std::string help) {
+  return {path, help, false,
+          [acc](const Scene& s) {
+            auto& o = acc(const_cast<Scene&>(s));
+            return o ? ordered_json(*o) : ordered_json(nullptr);
+          },
+          [acc, path](Scene& s, const json& v) {
+            if (v.is_null()) acc(s).reset();
+            else acc(s) = as_seed(v, path);
+          }};
+}
+
+template <class E, class Acc>
+Field choice(std::string path, Acc acc, std::vector<std::pair<std::string, E>> names, std::string help) {
+  std::string list;
+  for (auto& [n, e] : names) list += (list.empty() ? "" : " | ") + n;
+  return {path, help + " (" + list + ")", false,
+          [acc, names](const Scene& s) {
+            for (auto& [n, e] : names)
+              if (e == acc(const_cast<Scene&>(s))) return ordered_json(n);
+            return ordered_json(nullptr);
+          },
+          [acc, names, path, list](Scene& s, const json& v) {
+            if (v.is_string())
+              for (auto& [n, e] : names)
+                if (n == v.get<std::string>()) {
+                  acc(s) = e;
+                  return;
+                }
+            throw key_error(path, "must be one of " + list + ", got " + v.dump());
+          }};
+}
+
+template <class Acc>
+Field text(std::string path, Acc acc, std::string help) {
+  return {path, help, false, [acc](const Scene& s) { return ordered_json(acc(const_cast<Scene&>(s))); },
+          [acc, path](Scene& s, const json& v) {
+            if (!v.is_string()) throw key_error(path, std::string("expected a string, got ") + v.type_name());
+            acc(s) = v.get<std::string>();
+          }};
+}
+
+const json& element(const json& v, const std::string& path, size_t n) {
+  if (!v.is_array() || v.size() != n)
+    throw key_error(path, "expected an array of " + std::to_string(n) + " values, got " + v.dump());
+  return v;
+}
+
+std::array<double, kClasses> reals4(const json& v, const std::string& path, double lo, double hi) {
+  element(v, path, kClasses);
+  std::array<double, kClasses> out{};
+  for (int k = 0; k < kClasses; ++k) out[k] = in_range(v[k], path + "[" + std::to_string(k) + "]", lo, hi);
+  return out;
+}
+
+template <class Acc>
+Field per_class(std::string path, Acc acc, double lo, double hi, std::string help, bool px = false) {
+  return {path, help + ", per class S1..S4", px,
+          [acc](const Scene& s) { return ordered_json(acc(const_cast<Scene&>(s))); },
+          [acc, path, lo, hi](Scene& s, const json& v) { acc(s) = reals4(v, path, lo, hi); }};
+}
+
+std::string hex(Rgb c) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
+  return buf;
+}
+
+// A colour is "#rrggbb" or [r, g, b] with components 0..255.
+Rgb as_rgb(const json& v, const std::string& path) {
+  if (v.is_string()) {
+    std::string t = v.get<std::string>();
+    unsigned r, g, b;
+    char extra;
+    if (t.size() == 7 && std::sscanf(t.c_str(), "#%2x%2x%2x%c", &r, &g, &b, &extra) == 3)
+      return Rgb{uint8_t(r), uint8_t(g), uint8_t(b)};
+    throw key_error(path, "a colour is \"#rrggbb\" or [r, g, b], got " + v.dump());
+  }
+  element(v, path, 3);
+  return Rgb{uint8_t(as_integer(v[0], path + "[0]", 0, 255)), uint8_t(as_integer(v[1], path + "[1]", 0, 255)),
+             uint8_t(as_integer(v[2], path + "[2]", 0, 255))};
+}
+
+template <class Acc>
+Field colour(std::string path, Acc acc, std::string help) {
+  return {path, help, false, [acc](const Scene& s) { return ordered_json(hex(acc(const_cast<Scene&>(s)))); },
+          [acc, path](Scene& s, const json& v) { acc(s) = as_rgb(v, path); }};
+}
+
+// Objects inside lists (ellipses, cell overrides) are read key by key, with
+// the same refusal of unknown keys as the top level.
+template <class T>
+std::vector<T> list_of(const json& v, const std::string& path,
+                       const std::vector<std::pair<std::string, std::function<void(T&, const json&, const std::string&)>>>& keys,
+                       const std::vector<std::string>& required) {
+  if (!v.is_array()) throw key_error(path, std::string("expected an array, got ") + v.type_name());
+  std::vector<T> out;
+  for (size_t i = 0; i < v.size(); ++i) {
+    std::string p = path + "[" + std::to_string(i) + "]";
+    if (!v[i].is_object()) throw key_error(p, "expected an object");
+    T item{};
+    for (auto& [k, val] : v[i].items()) {
+      bool known = false;
+      for (auto& [name, set] : keys)
+        if (name == k) set(item, val, p + "." + k), known = true;
+      if (!known) throw key_error(p + "." + k, "unknown key");
+    }
+    for (auto& r : required)
+      if (!v[i].contains(r)) throw key_error(p + "." + r, "missing");
+    out.push_back(item);
+  }
+  return out;
+}
+
+Field ellipses_field() {
+  using Setter = std::function<void(EllipseSpec&, const json&, const std::string&)>;
+  std::vector<std::pair<std::string, Setter>> keys = {
+      {"cx", [](EllipseSpec& e, const json& v, const std::string& p) { e.cx = in_range(v, p, -1e6, 1e6); }},
+      {"cy", [](EllipseSpec& e, const json& v, const std::string& p) { e.cy = in_range(v, p, -1e6, 1e6); }},
+      {"a", [](EllipseSpec& e, const json& v, const std::string& p) { e.a = in_range(v, p, 0.5, 1e6); }},
+      {"b", [](EllipseSpec& e, const json& v, const std::string& p) { e.b = in_range(v, p, 0.5, 1e6); }},
+      {"angle_deg",
+       [](EllipseSpec& e, const json& v, const std::string& p) { e.angle_deg = in_range(v, p, -360, 360); }},
+  };
+  return {"segment.ellipses",
+          "explicit ellipses for segment.method=explicit: [{cx, cy, a, b, angle_deg}] in window px (y down)", true,
+          [](const Scene& s) {
+            ordered_json out = ordered_json::array();
+            for (auto& e : s.segment.ellipses)
+              out.push_back({{"cx", e.cx}, {"cy", e.cy}, {"a", e.a}, {"b", e.b}, {"angle_deg", e.angle_deg}});
+            return out;
+          },
+          [keys](Scene& s, const json& v) {
+            s.segment.ellipses = list_of<EllipseSpec>(v, "segment.ellipses", keys, {"cx", "cy", "a", "b"});
+          }};
+}
+
+Field overrides_field() {
+  using Setter = std::function<void(CellOverride&, const json&, const std::string&)>;
+  std::vector<std::pair<std::string, Setter>> keys = {
+      {"cell", [](CellOverride& c, const json& v, const std::string& p) { c.cell = int(as_integer(v, p, 0, 1e7)); }},
+      {"dominant",
+       [](CellOverride& c, const json& v, const std::string& p) { c.dominant = int(as_integer(v, p, 1, 4)) - 1; }},
+      {"secondary",
+       [](CellOverride& c, const json& v, const std::string& p) { c.secondary = int(as_integer(v, p, 1, 4)) - 1; }},
+  };
+  return {"init.cell_overrides",
+          "per-cell classes chosen by hand (paper §3): [{cell, dominant, secondary}], cells numbered row by row "
+          "from the top-left, classes 1..4",
+          false,
+          [](const Scene& s) {
+            ordered_json out = ordered_json::array();
+            for (auto& c : s.init.cell_overrides)
+              out.push_back({{"cell", c.cell}, {"dominant", c.dominant + 1}, {"secondary", c.secondary + 1}});
+            return out;
+          },
+          [keys](Scene& s, const json& v) {
+            s.init.cell_overrides =
+                list_of<CellOverride>(v, "init.cell_overrides", keys, {"cell", "dominant", "secondary"});
+          }};
+}
+
+Field colours_field() {
+  return {"grains.colors", "C1..C4, one per class: \"#rrggbb\" or [r, g, b]", false,
+          [](const Scene& s) {
+            ordered_json out = ordered_json::array();
+            for (auto c : s.grains.colors) out.push_back(hex(c));
+            return out;
+          },
+          [](Scene& s, const json& v) {
+            element(v, "grains.colors", kClasses);
+            for (int k = 0; k < kClasses; ++k)
+              s.grains.colors[k] = as_rgb(v[k], "grains.colors[" + std::to_string(k) + "]");
+          }};
+}
+
+Field repose_deg_field() {
+  return {"lattice.repose_deg",
+          "angle of repose in degrees per class S1..S4, overriding repose_gain·friction; null: from friction", false,
+          [](const Scene& s) {
+            return s.lattice.repose_deg ? ordered_json(*s.lattice.repose_deg) : ordered_json(nullptr);
+          },
+          [](Scene& s, const json& v) {
+            if (v.is_null()) s.lattice.repose_deg.reset();
+            else s.lattice.repose_deg = reals4(v, "lattice.repose_deg", 1, 75);
+          }};
+}
+
+std::vector<Field> make_fields() {
+  using S = Scene;
+  return {
+      text("description", [](S& s) -> auto& { return s.description; }, "free text about the scene, for people"),
+      integer("window.width", [](S& s) -> int& { return s.window.width; }, 8, 20000, "window width, px (§4.1)", true),
+      integer("window.height", [](S& s) -> int& { return s.window.height; }, 8, 20000, "window height, px", true),
+      integer("region.height", [](S& s) -> int& { return s.region.height; }, 1, 20000,
+              "initialization region height at the top of the window, px (§4.1)", true),
+      real("units.mm_per_pixel", [](S& s) -> double& { return s.units.mm_per_pixel; }, 1e-4, 100,
+           "mm per pixel; one grain per pixel of the region"),
+      real("units.packing", [](S& s) -> double& { return s.units.packing; }, 0.3, 0.91,
+           "2D packing fraction of a pile"),
+      per_class("grains.density_g_cm3", [](S& s) -> auto& { return s.grains.density_g_cm3; }, 0.01, 100,
+                "density, g/cm³ (§4.1)"),
+      per_class("grains.diameter_mm", [](S& s) -> auto& { return s.grains.diameter_mm; }, 1e-4, 100,
+                "diameter, mm (§4.1)"),
+      per_class("grains.proportions", [](S& s) -> auto& { return s.grains.proportions; }, 0, 1,
+                "share of cells whose dominant class it is (§4.4, Algorithm 1)"),
+      colours_field(),
+      choice<InitMethod>("init.method", [](S& s) -> auto& { return s.init.method; },
+                         {{"tessellation", InitMethod::Tessellation}, {"halftone", InitMethod::Halftone}},
+                         "how the region is filled (§4)"),
+      text("init.image", [](S& s) -> auto& { return s.init.image; },
+           "input picture for init.method=halftone, resized to the region if its size differs (§4.2)"),
+      choice<TessellationKind>("init.tessellation", [](S& s) -> auto& { return s.init.tessellation; },
+                               {{"uniform", TessellationKind::Uniform},
+                                {"varying", TessellationKind::Varying},
+                                {"strips", TessellationKind::Strips}},
+                               "cell layout (§4.3: Fig. 4, Fig. 5; §9 strips)"),
+      real("init.cell_width", [](S& s) -> double& { return s.init.cell_width; }, 1, 1e5,
+           "uniform cell width, px", true),
+      real("init.cell_height", [](S& s) -> double& { return s.init.cell_height; }, 1, 1e5,
+           "uniform cell height, px", true),
+      real("init.row_height_min", [](S& s) -> double& { return s.init.row_height_min; }, 1, 1e5,
+           "varying: row height at the top; strips: smallest strip, px", true),
+      real("init.row_height_max", [](S& s) -> double& { return s.init.row_height_max; }, 1, 1e5,
+           "varying: row height at the bottom; strips: largest strip, px", true),
+      real("init.cell_width_min", [](S& s) -> double& { return s.init.cell_width_min; }, 1, 1e5,
+           "varying: narrowest cell, px", true),
+      real("init.cell_width_max", [](S& s) -> double& { return s.init.cell_width_max; }, 1, 1e5,
+           "varying: widest cell, px", true),
+      real("init.dominant_share", [](S& s) -> double& { return s.init.dominant_share; }, 0, 1,
+           "probability that a grain takes its cell's dominant class (§4.4: 0.8)"),
+      overrides_field(),
+      choice<SegmentMethod>("segment.method", [](S& s) -> auto& { return s.segment.method; },
+                            {{"ellipses", SegmentMethod::Ellipses},
+                             {"explicit", SegmentMethod::Explicit},
+                             {"cells", SegmentMethod::Cells}},
+                            "falling units: automatic ellipses (§5.1), listed ellipses, or the cells (Fig. 4b, 5b)"),
+      real("segment.semi_major_min", [](S& s) -> double& { return s.segment.semi_major_min; }, 1, 1e5,
+           "semi-major axis of the top row of ellipses, px", true),
+      real("segment.semi_major_max", [](S& s) -> double& { return s.segment.semi_major_max; }, 1, 1e5,
+           "semi-major axis of the bottom row of ellipses, px", true),
+      real("segment.eccentricity_min", [](S& s) -> double& { return s.segment.eccentricity_min; }, 0, 0.999,
+           "smallest ellipse eccentricity (§9: small = steep piles)"),
+      real("segment.eccentricity_max", [](S& s) -> double& { return s.segment.eccentricity_max; }, 0, 0.999,
+           "largest ellipse eccentricity"),
+      ellipses_field(),
+      real("order.row_tolerance", [](S& s) -> double& { return s.order.row_tolerance; }, 0, 1e5,
+           "units whose centres differ by at most this in y form one row (§6), px", true),
+      real("release.outlet_width_mm", [](S& s) -> double& { return s.release.outlet_width_mm; }, 0, 1e4,
+           "outlet at the middle of a unit's lowest edge, mm (§7: 15 mm)"),
+      real("release.gravity_m_s2", [](S& s) -> double& { return s.release.gravity_m_s2; }, 0.01, 1000,
+           "gravity in Eq. 1-2, m/s²"),
+      choice<Mode>("mode", [](S& s) -> auto& { return s.mode; },
+                   {{"lattice", Mode::Lattice}, {"dem", Mode::Dem}}, "simulation backend"),
+      {"seed", "sets the layout and the physics seed at once", false,
+       [](const Scene& s) { return ordered_json(s.seed); },
+       [](Scene& s, const json& v) { s.seed = as_seed(v, "seed"); }},
+      optional_seed("layout_seed", [](S& s) -> auto& { return s.layout_seed; },
+                    "tessellation, colours, ellipses, falling-order ties; null: seed"),
+      optional_seed("physics_seed", [](S& s) -> auto& { return s.physics_seed; },
+                    "the simulation's own randomness; null: seed"),
+      real("physics.friction", [](S& s) -> double& { return s.physics.friction; }, 0, 10,
+           "Coulomb friction, static = dynamic (§7: 0.4)"),
+      real("physics.restitution", [](S& s) -> double& { return s.physics.restitution; }, 0, 1,
+           "restitution (§7: 0.1)"),
+      real("lattice.resolution", [](S& s) -> double& { return s.lattice.resolution; }, 0.05, 8,
+           "height-field columns per pixel"),
+      per_class("lattice.repose_gain", [](S& s) -> auto& { return s.lattice.repose_gain; }, 0.01, 20,
+                "tan(angle of repose) = gain · physics.friction"),
+      repose_deg_field(),
+      per_class("lattice.runout_px", [](S& s) -> auto& { return s.lattice.runout_px; }, 0, 1e4,
+                "how far a grain keeps going down a slope once stable, px", true),
+      integer("lattice.window_columns", [](S& s) -> int& { return s.lattice.window_columns; }, 0, 64,
+              "columns the non-local slope rule looks ahead; 0: chosen per class"),
+      text("render.background", [](S& s) -> auto& { return s.render.background; },
+           "picture behind the emptied upper part (§10, Fig. 14g); empty: render.background_color"),
+      colour("render.background_color", [](S& s) -> auto& { return s.render.background_color; },
+             "colour of the emptied upper part"),
+  };
+}
+
+}  // namespace
+
+const std::vector<Field>& scene_fields() {
+  static const std::vector<Field> fields = make_fields();
+  return fields;
+}
+
+}  // namespace sandpic

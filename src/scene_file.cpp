@@ -1,0 +1,187 @@
+#include "src/scene_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "src/errors.h"
+
+namespace sandpic {
+namespace {
+
+const Field* find_field(const std::string& path) {
+  for (auto& f : scene_fields())
+    if (f.path == path) return &f;
+  return nullptr;
+}
+
+bool is_prefix_of_a_field(const std::string& path) {
+  for (auto& f : scene_fields())
+    if (f.path.size() > path.size() && f.path.compare(0, path.size(), path) == 0 && f.path[path.size()] == '.')
+      return true;
+  return false;
+}
+
+size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diag = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+[[noreturn]] void unknown_key(const std::string& path) {
+  throw InputError("unknown scene key '" + path + "' (did you mean '" + nearest_key(path) +
+                   "'? `sandpic scene` lists every key)");
+}
+
+void apply_at(Scene& s, const std::string& path, const json& v) {
+  if (const Field* f = find_field(path)) return f->set(s, v);
+  if (v.is_object() && (path.empty() || is_prefix_of_a_field(path))) {
+    for (auto& [k, child] : v.items()) apply_at(s, path.empty() ? k : path + "." + k, child);
+    return;
+  }
+  unknown_key(path);
+}
+
+// "line L, column C" of a byte offset, for JSON syntax errors.
+std::string where(const std::string& text, size_t byte) {
+  size_t line = 1, col = 1;
+  for (size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') ++line, col = 1;
+    else ++col;
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(col);
+}
+
+json scaled(const json& v, double f, const std::string& path) {
+  if (v.is_number_integer()) return json(static_cast<long long>(std::max(1.0, std::round(v.get<double>() * f))));
+  if (v.is_number()) return json(v.get<double>() * f);
+  if (v.is_array()) {
+    json out = json::array();
+    for (auto& e : v) out.push_back(scaled(e, f, path));
+    return out;
+  }
+  if (v.is_object()) {  // an explicit ellipse: positions and axes scale, the angle does not
+    json out = v;
+    for (auto k : {"cx", "cy", "a", "b"}) out[k] = v[k].get<double>() * f;
+    return out;
+  }
+  return v;
+}
+
+}  // namespace
+
+std::string nearest_key(const std::string& path) {
+  std::string best;
+  size_t best_d = SIZE_MAX;
+  for (auto& f : scene_fields()) {
+    // Compare with the whole path and with its last part, so that a bare
+    // "friction" still finds "physics.friction".
+    std::string leaf = f.path.substr(f.path.rfind('.') + 1);
+    size_t d = std::min(edit_distance(path, f.path), edit_distance(path, leaf));
+    if (d < best_d) best_d = d, best = f.path;
+  }
+  return best;
+}
+
+void apply_json(Scene& s, const json& doc) {
+  if (!doc.is_object()) throw InputError("a scene file holds one JSON object, got " + std::string(doc.type_name()));
+  apply_at(s, "", doc);
+}
+
+Scene load_scene(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read scene file '" + path + "'");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::string text = buf.str();
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw InputError("scene file '" + path + "': malformed JSON at " + where(text, e.byte > 0 ? e.byte - 1 : 0));
+  }
+  Scene s;
+  size_t slash = path.rfind('/');
+  s.base_dir = slash == std::string::npos ? "." : path.substr(0, slash);
+  try {
+    apply_json(s, doc);
+  } catch (const InputError& e) {
+    throw InputError("scene file '" + path + "': " + e.what());
+  }
+  return s;
+}
+
+void apply_setting(Scene& s, const std::string& assignment) {
+  size_t eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set expects key.path=value, got '" + assignment + "'");
+  std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  json v = json::parse(text, nullptr, false);
+  if (v.is_discarded()) v = text;  // a bare word is a string: --set mode=lattice
+  if (!find_field(path)) unknown_key(path);
+  find_field(path)->set(s, v);
+}
+
+// Every length in pixels is multiplied by `factor`, so the grain count goes by
+// factor². Grains keep their size in pixels: a pixel (and so every mm value)
+// grows by 1/factor, as if the same device were made with coarser sand.
+void apply_scale(Scene& s, double factor) {
+  if (!(factor > 0) || !std::isfinite(factor) || factor > 8)
+    throw InputError("--scale must be in (0, 8], got " + std::to_string(factor));
+  for (auto& f : scene_fields())
+    if (f.px) f.set(s, scaled(json::parse(f.get(s).dump()), factor, f.path));
+  s.units.mm_per_pixel /= factor;
+  for (auto& d : s.grains.diameter_mm) d /= factor;
+}
+
+ordered_json to_json(const Scene& s) {
+  ordered_json out = ordered_json::object();
+  for (auto& f : scene_fields()) {
+    ordered_json* node = &out;
+    std::string rest = f.path;
+    for (size_t dot; (dot = rest.find('.')) != std::string::npos; rest = rest.substr(dot + 1))
+      node = &(*node)[rest.substr(0, dot)];
+    (*node)[rest] = f.get(s);
+  }
+  return out;
+}
+
+void validate(const Scene& s) {
+  auto need = [](bool ok, const char* key, const std::string& what) {
+    if (!ok) throw key_error(key, what);
+  };
+  need(s.region.height <= s.window.height, "region.height", "must not exceed window.height");
+  need(s.init.row_height_min <= s.init.row_height_max, "init.row_height_min", "must not exceed init.row_height_max");
+  need(s.init.cell_width_min <= s.init.cell_width_max, "init.cell_width_min", "must not exceed init.cell_width_max");
+  need(s.segment.semi_major_min <= s.segment.semi_major_max, "segment.semi_major_min",
+       "must not exceed segment.semi_major_max");
+  need(s.segment.eccentricity_min <= s.segment.eccentricity_max, "segment.eccentricity_min",
+       "must not exceed segment.eccentricity_max");
+  double share = 0;
+  for (double p : s.grains.proportions) share += p;
+  need(share > 0, "grains.proportions", "at least one class needs a share above 0");
+  need(s.init.method != InitMethod::Halftone || !s.init.image.empty(), "init.image",
+       "init.method=halftone needs an input picture");
+  need(s.segment.method != SegmentMethod::Explicit || !s.segment.ellipses.empty(), "segment.ellipses",
+       "segment.method=explicit needs at least one ellipse");
+  // The sand must fit in the window: at worst every grain is of the largest class.
+  double largest = 0;
+  for (int k = 0; k < kClasses; ++k) largest = std::max(largest, grain_area_px(s, k));
+  double worst = largest * double(s.window.width) * s.region.height;
+  double room = double(s.window.width) * s.window.height;
+  need(worst <= 0.98 * room, "region.height",
+       "the region's sand (up to " + std::to_string(long(worst)) + " px² packed) would not fit in the window (" +
+           std::to_string(long(room)) + " px²); lower region.height or grains.diameter_mm");
+}
+
+}  // namespace sandpic

@@ -1,0 +1,36 @@
+#pragma once
+// Scene files (JSON): parse once into the Scene struct, with every key's type,
+// range and default declared in one registry (scene_fields.cpp). A key nobody
+// reads is an error that names it and suggests the nearest valid key.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "src/scene.h"
+
+namespace sandpic {
+
+using json = nlohmann::json;
+using ordered_json = nlohmann::ordered_json;
+
+struct Field {
+  std::string path;  // "segment.eccentricity_max"
+  std::string help;
+  bool px = false;  // a length in pixels: multiplied by --scale
+  std::function<ordered_json(const Scene&)> get;
+  std::function<void(Scene&, const json&)> set;  // throws InputError naming path
+};
+
+const std::vector<Field>& scene_fields();
+
+Scene load_scene(const std::string& path);
+void apply_json(Scene& s, const json& doc);
+void apply_setting(Scene& s, const std::string& assignment);  // "key.path=value"
+void apply_scale(Scene& s, double factor);
+void validate(const Scene& s);  // checks that involve several keys
+ordered_json to_json(const Scene& s);
+std::string nearest_key(const std::string& path);
+
+}  // namespace sandpic

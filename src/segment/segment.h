@@ -1,0 +1,39 @@
+#pragma once
+// paper §5-6: the falling units (ellipses, or the tessellation's cells), in
+// falling order, and the unit each grain belongs to.
+#include <vector>
+
+#include "src/init/init.h"
+#include "src/segment/ellipse.h"
+
+namespace sandpic {
+
+struct Unit {
+  bool is_ellipse = true;
+  Ellipse ellipse;             // when is_ellipse
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // a cell, when !is_ellipse
+  int row = 0;                 // paper §6: row of the falling order, 0 = lowest
+
+  Vec2 centre() const;
+  Vec2 outlet() const;  // paper §6-7: middle of the lowest edge
+  double width() const;
+  bool row_span(double y, double& xa, double& xb) const;
+  double distance_outside(const Vec2& p) const;
+};
+
+struct Segmentation {
+  std::vector<Unit> units;       // in falling order
+  std::vector<int32_t> unit_of;  // per grain id: index into units
+};
+
+// The units of segment.method, in no particular order.
+std::vector<Unit> make_units(const Scene& s, const Tessellation& t);
+// paper §6: rows by centre height, the lowest row first; random within a row.
+void order_units(std::vector<Unit>& units, double row_tolerance, uint64_t seed);
+// Every grain in exactly one unit: in an overlap the unit that falls first,
+// in no unit the nearest one.
+std::vector<int32_t> assign_grains(const std::vector<Unit>& units, int width, int height);
+
+Segmentation segment(const Scene& s, const Tessellation& t);
+
+}  // namespace sandpic

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# The CLI as a user runs it: exit codes, one-line errors that name the key or
+# file, outputs written whole or not at all, same seed = same bytes.
+# Usage: test_cli.sh SANDPIC_BINARY PROJECT_ROOT
+set -u
+BIN=$1
+ROOT=$2
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+passed=0 failed=0
+ok() { passed=$((passed + 1)); }
+bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
+
+# expect CODE DESCRIPTION -- COMMAND...: runs it, keeps stderr in $T/err.
+expect() {
+  local code=$1 what=$2
+  shift 3
+  "$@" >"$T/out" 2>"$T/err"
+  local rc=$?
+  if [ "$rc" = "$code" ]; then ok; else bad "$what: exit $rc, wanted $code; stderr: $(cat "$T/err")"; fi
+}
+err_has() { if grep -q -- "$1" "$T/err"; then ok; else bad "stderr lacks '$1': $(cat "$T/err")"; fi; }
+one_line() { if [ "$(wc -l <"$T/err")" = 1 ]; then ok; else bad "stderr is not one line: $(cat "$T/err")"; fi; }
+absent() { if [ ! -e "$1" ]; then ok; else bad "$1 was written"; fi; }
+is_png() { if [ "$(head -c 4 "$1" | od -An -c | tr -d ' ')" = "211PNG" ]; then ok; else bad "$1 is not a PNG"; fi; }
+
+# A complete render at quarter scale, with stats and stages.
+expect 0 "render" -- "$BIN" render -o "$T/a.png" --scale 0.25 --stats "$T/s.json" --stages "$T/stages"
+is_png "$T/a.png"
+if [ ! -s "$T/err" ]; then ok; else bad "stderr not quiet off a terminal: $(cat "$T/err")"; fi
+for k in '"mode": "lattice"' '"in_picture": 22000' '"total": 22000' '"per_class"' '"simulate_s"' '"total_s"'; do
+  if grep -q -- "$k" "$T/s.json"; then ok; else bad "stats lack $k"; fi
+done
+for f in 1-initialization 2-filled 3-segmentation 4-falling-order 5-picture; do is_png "$T/stages/$f.png"; done
+
+# Same seed, same bytes, at any thread count; another seed, another picture.
+expect 0 "render again" -- "$BIN" render -o "$T/b.png" --scale 0.25 --threads 1
+if cmp -s "$T/a.png" "$T/b.png"; then ok; else bad "same seed gave other bytes"; fi
+expect 0 "other seed" -- "$BIN" render -o "$T/c.png" --scale 0.25 --seed 7
+if ! cmp -s "$T/a.png" "$T/c.png"; then ok; else bad "another seed gave the same picture"; fi
+
+# The printed default scene is a complete scene file.
+expect 0 "scene" -- "$BIN" scene
+cp "$T/out" "$T/default.json"
+expect 0 "render printed scene" -- "$BIN" render "$T/default.json" -o "$T/d.png" --scale 0.25
+if cmp -s "$T/a.png" "$T/d.png"; then ok; else bad "the printed default scene renders otherwise"; fi
+
+# Bad input: exit 2, one line naming the key or file, no output, old file kept.
+echo keep >"$T/keep.png"
+expect 2 "misspelt key" -- "$BIN" render -o "$T/keep.png" --scale 0.25 --set physics.frictoin=0.3
+one_line; err_has "physics.friction"
+if [ "$(cat "$T/keep.png")" = keep ]; then ok; else bad "an existing output was overwritten on failure"; fi
+expect 2 "bad value" -- "$BIN" render -o "$T/e.png" --set physics.friction=-2
+one_line; err_has "physics.friction"; absent "$T/e.png"
+expect 2 "missing scene" -- "$BIN" render "$T/none.json" -o "$T/e.png"
+one_line; err_has "none.json"; absent "$T/e.png"
+printf '{\n "mode": "lattice",\n "seed": 1,,\n}\n' >"$T/broken.json"
+expect 2 "malformed scene" -- "$BIN" render "$T/broken.json" -o "$T/e.png"
+one_line; err_has "line 3"; absent "$T/e.png"
+expect 2 "missing image" -- "$BIN" render -o "$T/e.png" --set init.method=halftone --set init.image=/nope/pic.png
+one_line; err_has "/nope/pic.png"; absent "$T/e.png"
+expect 2 "no output folder" -- "$BIN" render -o "$T/no/such/dir/e.png"
+one_line; err_has "no/such/dir"
+expect 2 "no -o" -- "$BIN" render
+expect 2 "bad scale" -- "$BIN" render -o "$T/e.png" --scale -1
+one_line; absent "$T/e.png"
+expect 2 "dem without Bullet" -- "$BIN" render -o "$T/e.png" --mode dem
+one_line; err_has "mode"; absent "$T/e.png"
+
+# Every example renders (scaled down).
+for scene in "$ROOT"/examples/*.json; do
+  expect 0 "example $(basename "$scene")" -- "$BIN" render "$scene" -o "$T/ex.png" --scale 0.3
+done
+
+echo "cli: $passed passed, $failed failed"
+[ "$failed" = 0 ]

@@ -1,0 +1,134 @@
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include "src/errors.h"
+#include "src/scene_file.h"
+
+namespace sandpic {
+namespace {
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SceneFile, DefaultsAreThePapers) {
+  Scene s;
+  EXPECT_EQ(s.window.width, 1000);
+  EXPECT_EQ(s.window.height, 700);
+  EXPECT_EQ(s.region.height, 350);
+  EXPECT_DOUBLE_EQ(s.grains.density_g_cm3[0], 3.2);
+  EXPECT_DOUBLE_EQ(s.grains.diameter_mm[2], 0.1);
+  EXPECT_DOUBLE_EQ(s.grains.proportions[0], 0.375);
+  EXPECT_DOUBLE_EQ(s.init.dominant_share, 0.8);
+  EXPECT_DOUBLE_EQ(s.release.outlet_width_mm, 15);
+  EXPECT_DOUBLE_EQ(s.physics.friction, 0.4);
+  EXPECT_DOUBLE_EQ(s.physics.restitution, 0.1);
+}
+
+TEST(SceneFile, DumpReadsBackToTheSameScene) {
+  Scene s;
+  s.init.cell_overrides = {{3, 1, 2}};
+  s.segment.ellipses = {{10, 20, 30, 15, 12}};
+  s.lattice.repose_deg = std::array<double, 4>{20, 25, 30, 35};
+  s.layout_seed = 77;
+  ordered_json dumped = to_json(s);
+  Scene t;
+  apply_json(t, json::parse(dumped.dump()));
+  EXPECT_EQ(to_json(t).dump(), dumped.dump());
+  EXPECT_EQ(t.layout(), 77u);
+  EXPECT_EQ(t.physics_rng(), s.seed);
+}
+
+TEST(SceneFile, EveryRequiredKeyExists) {
+  std::string keys;
+  for (const Field& f : scene_fields()) keys += f.path + " ";
+  for (const char* k : {"init.method ", "init.image ", "mode ", "seed ", "layout_seed ", "physics_seed "})
+    EXPECT_NE(keys.find(k), std::string::npos) << k;
+}
+
+TEST(SceneFile, UnknownKeySuggestsTheNearest) {
+  Scene s;
+  std::string e = error_of([&] { apply_json(s, json::parse(R"({"segment": {"eccentricty_max": 0.5}})")); });
+  EXPECT_NE(e.find("'segment.eccentricty_max'"), std::string::npos) << e;
+  EXPECT_NE(e.find("did you mean 'segment.eccentricity_max'"), std::string::npos) << e;
+  e = error_of([&] { apply_setting(s, "friction=0.2"); });
+  EXPECT_NE(e.find("physics.friction"), std::string::npos) << e;
+}
+
+TEST(SceneFile, BadValuesNameTheirKey) {
+  Scene s;
+  EXPECT_NE(error_of([&] { apply_json(s, json::parse(R"({"window": {"width": "wide"}})")); }).find("window.width"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { apply_setting(s, "physics.friction=-1"); }).find("physics.friction"), std::string::npos);
+  EXPECT_NE(error_of([&] { apply_setting(s, "window.width=10.5"); }).find("whole number"), std::string::npos);
+  EXPECT_NE(error_of([&] { apply_setting(s, "mode=fast"); }).find("lattice | dem"), std::string::npos);
+  EXPECT_NE(error_of([&] { apply_setting(s, "grains.colors=[1,2,3]"); }).find("grains.colors"), std::string::npos);
+  EXPECT_NE(error_of([&] { apply_setting(s, "physics.friction=1e999"); }).find("physics.friction"),
+            std::string::npos);
+  std::string e = error_of([&] { apply_json(s, json::parse(R"({"segment": {"ellipses": [{"cx": 1, "cy": 2}]}})")); });
+  EXPECT_NE(e.find("segment.ellipses[0].a"), std::string::npos) << e;
+}
+
+TEST(SceneFile, ColoursAreHexOrTriples) {
+  Scene s;
+  apply_setting(s, R"(grains.colors=["#ff0000", [0, 255, 0], "#0000ff", [1, 2, 3]])");
+  EXPECT_EQ(s.grains.colors[0], (Rgb{255, 0, 0}));
+  EXPECT_EQ(s.grains.colors[1], (Rgb{0, 255, 0}));
+  EXPECT_EQ(s.grains.colors[3], (Rgb{1, 2, 3}));
+}
+
+TEST(SceneFile, CrossKeyChecks) {
+  Scene s;
+  s.region.height = 800;
+  EXPECT_NE(error_of([&] { validate(s); }).find("region.height"), std::string::npos);
+  s = Scene{};
+  s.init.method = InitMethod::Halftone;
+  EXPECT_NE(error_of([&] { validate(s); }).find("init.image"), std::string::npos);
+  s = Scene{};
+  s.region.height = 700;  // the region's sand would not fit in the window
+  EXPECT_NE(error_of([&] { validate(s); }).find("would not fit"), std::string::npos);
+  EXPECT_EQ(error_of([&] { validate(Scene{}); }), "");
+}
+
+TEST(SceneFile, ScaleMultipliesPixelLengthsAndKeepsGrainSizeInPixels) {
+  Scene s;
+  s.segment.ellipses = {{100, 50, 40, 20, 30}};
+  double area = grain_area_px(s, 0);
+  apply_scale(s, 0.25);
+  EXPECT_EQ(s.window.width, 250);
+  EXPECT_EQ(s.window.height, 175);
+  EXPECT_EQ(s.region.height, 88);
+  EXPECT_DOUBLE_EQ(s.segment.semi_major_max, 150 * 0.25);
+  EXPECT_DOUBLE_EQ(s.segment.ellipses[0].cx, 25);
+  EXPECT_DOUBLE_EQ(s.segment.ellipses[0].angle_deg, 30);
+  EXPECT_NEAR(grain_area_px(s, 0), area, 1e-12);
+  EXPECT_NEAR(s.release.outlet_width_mm * px_per_mm(s), 15 / 0.18 * 0.25, 1e-9);  // the outlet in px scales too
+}
+
+TEST(SceneFile, LoadReportsFileAndPosition) {
+  std::string path = testing::TempDir() + "/bad_scene.json";
+  std::ofstream(path) << "{\n  \"mode\": \"lattice\",\n  \"seed\": ,\n}\n";
+  std::string e = error_of([&] { load_scene(path); });
+  EXPECT_NE(e.find(path), std::string::npos) << e;
+  EXPECT_NE(e.find("line 3"), std::string::npos) << e;
+  EXPECT_NE(error_of([&] { load_scene("/no/such/scene.json"); }).find("/no/such/scene.json"), std::string::npos);
+  std::remove(path.c_str());
+}
+
+TEST(SceneFile, RelativeImagePathsStartAtTheSceneFile) {
+  std::string path = testing::TempDir() + "/rel_scene.json";
+  std::ofstream(path) << R"({"init": {"method": "halftone", "image": "pic.png"}})";
+  Scene s = load_scene(path);
+  EXPECT_EQ(s.resolve(s.init.image), s.base_dir + "/pic.png");
+  std::remove(path.c_str());
+}
+
+}  // namespace
+}  // namespace sandpic

@@ -1,0 +1,62 @@
+#pragma once
+// Helpers shared by the tests: small scenes and pile measurements.
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <opencv2/core.hpp>
+
+#include "src/scene.h"
+
+namespace sandpic::test {
+
+// A scene small enough for a unit test: one ellipse over the middle.
+inline Scene one_ellipse_scene(int width = 400, int height = 300, int region = 80) {
+  Scene s;
+  s.window.width = width;
+  s.window.height = height;
+  s.region.height = region;
+  s.segment.method = SegmentMethod::Explicit;
+  s.segment.ellipses = {EllipseSpec{width / 2.0, region / 2.0, width * 0.3, region * 0.45, 0}};
+  s.init.tessellation = TessellationKind::Uniform;
+  s.init.cell_width = 20;
+  s.init.cell_height = 10;
+  s.release.outlet_width_mm = 1;  // a narrow outlet: one clean cone
+  return s;
+}
+
+// Sand height of every pixel column of a class map (CV_8U, 255 = no sand).
+inline std::vector<double> column_heights(const cv::Mat& class_map) {
+  std::vector<double> h(size_t(class_map.cols), 0);
+  for (int x = 0; x < class_map.cols; ++x)
+    for (int y = 0; y < class_map.rows; ++y)
+      if (class_map.at<uint8_t>(y, x) != 255) {
+        h[size_t(x)] = class_map.rows - y;
+        break;
+      }
+  return h;
+}
+
+// Slope angle of a single pile, in degrees: a least-squares line through
+// each flank between 20% and 80% of the peak height, the two averaged.
+inline double flank_angle_deg(const std::vector<double>& h, double column_width = 1) {
+  size_t peak = 0;
+  for (size_t i = 0; i < h.size(); ++i)
+    if (h[i] > h[peak]) peak = i;
+  auto fit = [&](int dir) {
+    std::vector<double> xs, ys;
+    for (long i = long(peak); i >= 0 && i < long(h.size()); i += dir)
+      if (h[size_t(i)] > 0.2 * h[peak] && h[size_t(i)] < 0.8 * h[peak])
+        xs.push_back(double(i) * column_width), ys.push_back(h[size_t(i)]);
+    if (xs.size() < 3) return double(NAN);
+    Eigen::MatrixXd A(xs.size(), 2);
+    Eigen::VectorXd b(xs.size());
+    for (size_t i = 0; i < xs.size(); ++i) A(long(i), 0) = xs[i], A(long(i), 1) = 1, b(long(i)) = ys[i];
+    Eigen::Vector2d line = A.colPivHouseholderQr().solve(b);
+    return std::atan(std::abs(line(0))) * 180 / std::numbers::pi;
+  };
+  return (fit(+1) + fit(-1)) / 2;
+}
+
+}  // namespace sandpic::test
