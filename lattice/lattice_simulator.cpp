@@ -13,18 +13,21 @@ double repose_angle_deg(const Scene& s, int k) {
   return std::atan(s.lattice.repose_gain[k] * s.physics.friction) * 180 / std::numbers::pi;
 }
 
-SlopeRule slope_rule(const Scene& s, int k) {
-  const double column_px = 1 / s.lattice.resolution;
+SlopeRule make_slope_rule(double degrees, double rise_px, double column_px, double runout_px) {
   SlopeRule r;
-  r.drop_per_column = std::tan(repose_angle_deg(s, k) * std::numbers::pi / 180) * column_px;
+  r.drop_per_column = std::tan(degrees * std::numbers::pi / 180) * column_px;
   // The window spreads a grain's own height step (rise) over enough columns
   // that it changes the slope by at most half the rule's slope.
-  double rise = grain_area_px(s, k) / column_px;
-  r.window = s.lattice.window_columns > 0
-                 ? s.lattice.window_columns
-                 : std::clamp(int(std::ceil(2 * rise / std::max(r.drop_per_column, 1e-9))), 1,
-                              HeightField::kMaxWindow);
-  r.runout = int(std::lround(s.lattice.runout_px[k] * s.lattice.resolution));
+  r.window = std::clamp(int(std::ceil(2 * rise_px / std::max(r.drop_per_column, 1e-9))), 1, HeightField::kMaxWindow);
+  r.runout = int(std::lround(runout_px / column_px));
+  return r;
+}
+
+SlopeRule slope_rule(const Scene& s, int k) {
+  const double column_px = 1 / s.lattice.resolution;
+  SlopeRule r = make_slope_rule(repose_angle_deg(s, k), grain_area_px(s, k) / column_px, column_px,
+                                s.lattice.runout_px[k]);
+  if (s.lattice.window_columns > 0) r.window = s.lattice.window_columns;
   return r;
 }
 

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "lattice/height_field.h"
+#include "lattice/lattice_simulator.h"
 #include "src/rng.h"
 #include "tests/test_util.h"
 
@@ -12,12 +13,7 @@ namespace {
 
 constexpr double kBigGrainArea = 1.1826;  // px², a 0.2 mm grain at 0.18 mm/px, packed at 0.82
 
-SlopeRule rule_for(double degrees, double area = kBigGrainArea) {
-  SlopeRule r;
-  r.drop_per_column = std::tan(degrees * std::numbers::pi / 180);
-  r.window = std::clamp(int(std::ceil(2 * area / r.drop_per_column)), 1, HeightField::kMaxWindow);
-  return r;
-}
+SlopeRule rule_for(double degrees) { return make_slope_rule(degrees, kBigGrainArea, 1.0); }
 
 // Drops n grains around the middle (a narrow jitter, as from an outlet) and
 // returns the pile's flank angle.

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "lattice/lattice_simulator.h"
 #include "src/pipeline.h"
 #include "tests/test_util.h"
@@ -23,6 +25,7 @@ TEST(LatticeSimulator, PileSlopeGrowsWithFriction) {
     Scene s = test::one_ellipse_scene();
     s.physics.friction = mu;
     double angle = pile_angle(s);
+    std::printf("friction %.1f: rule %.1f°, pile %.1f°\n", mu, repose_angle_deg(s, 0), angle);
     EXPECT_GT(angle, last + 5) << "friction " << mu;
     EXPECT_NEAR(angle, repose_angle_deg(s, 0), 6) << "friction " << mu;
     last = angle;
@@ -37,12 +40,12 @@ TEST(LatticeSimulator, BigGrainsPileSteeper) {
   double big = pile_angle(s);
   s.grains.proportions = {0, 0, 1, 0};
   double small = pile_angle(s);
+  std::printf("S1 only: %.1f°, S3 only: %.1f°\n", big, small);
   EXPECT_GT(big, small + 2);
 }
 
 TEST(LatticeSimulator, EveryGrainSettlesInThePicture) {
   Scene s = test::one_ellipse_scene();
-  Progress quiet(false);
   auto sim = make_lattice_simulator();
   RunResult r = run_pipeline(s, *sim, RunOptions{});
   EXPECT_EQ(r.stats["grains"]["in_picture"], r.stats["grains"]["total"]);
