@@ -68,6 +68,7 @@ RunResult run_pipeline(const Scene& s, Simulator& sim, const RunOptions& opt) {
   if (opt.stages) {
     out.stages = stage_pictures(s, init, seg, order);
     out.stages.emplace_back("5-picture.png", out.picture);
+    for (auto& stage : sim_result.stages) out.stages.push_back(stage);
     timing["stages_s"] = clock.lap();
   }
   timing["total_s"] = clock.total();

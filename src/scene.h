@@ -20,6 +20,7 @@ enum class InitMethod { Tessellation, Halftone };
 enum class TessellationKind { Uniform, Varying, Strips };
 enum class SegmentMethod { Ellipses, Explicit, Cells };
 enum class Mode { Lattice, Dem };
+enum class Layers { Three, Bcre, AllDynamic };  // paper §8: layer models of the DEM mode
 
 // An ellipse of the segmentation, in window pixels (x right, y down).
 struct EllipseSpec {
@@ -97,6 +98,23 @@ struct Scene {
     std::array<double, kClasses> runout_px{2, 2, 3, 3};  // extra travel down a slope
     int window_columns = 0;  // non-local rule width; 0: chosen per class
   } lattice;
+  struct Dem {
+    Layers layers = Layers::Three;
+    double step_diameters = 0.1;  // most a grain moves in one step, in small-grain diameters
+    int solver_iterations = 10;
+    double release_rate = 4000;    // grains released per simulated second
+    double rolling_resistance = 0.6;  // rolling friction, as a fraction of the grain radius (tan 31°)
+    bool water = true;             // drag and buoyancy of the device's water
+    double water_density_g_cm3 = 1.0;
+    double water_viscosity_pa_s = 1.0e-3;
+    int cycle_steps = 40;              // paper §8.1: layers updated every 40 steps
+    double rest_displacement = 0.05;   // at rest: moved less than this (diameters) in a cycle
+    int rest_cycles_any_slope = 3;     // at rest this many cycles: static on any slope
+    double slope_limit_deg = 38;       // paper §8.1's α, for |θ|
+    double static_thickness_mm = 2;    // paper §8.1
+    double insert_gap_diameters = 4;   // flight is analytic until this far above the pile
+    double max_overlap = 1.0;          // divergence: overlap beyond this (small-grain diameters)
+  } dem;
   struct Render {
     std::string background;  // image for the emptied upper part (§10, Fig. 14g)
     Rgb background_color{248, 246, 240};

@@ -25,6 +25,7 @@ struct SimResult {
   cv::Mat class_map;          // window size, CV_8U: class 0..3 or kNoSand
   std::vector<float> x, y;    // settled centre of each grain id, window px
   ordered_json stats;         // the backend's own figures
+  std::vector<std::pair<std::string, cv::Mat>> stages;  // the backend's own --stages pictures
 };
 
 class Simulator {

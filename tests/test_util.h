@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 
 #include "src/scene.h"
+#include "src/simulator.h"
 
 namespace sandpic::test {
 
@@ -24,6 +25,15 @@ inline Scene one_ellipse_scene(int width = 400, int height = 300, int region = 8
   s.init.cell_height = 10;
   s.release.outlet_width_mm = 1;  // a narrow outlet: one clean cone
   return s;
+}
+
+// The pipeline up to the simulation, without rendering: a backend's raw result.
+inline SimResult simulate_scene(const Scene& s, Simulator& sim) {
+  Initialization init = initialize(s);
+  Segmentation seg = segment(s, init.tessellation);
+  FallingOrder order = falling_order(seg, init.grains, s.layout());
+  Progress quiet(false);
+  return sim.simulate(SimInput{s, init.grains, seg, order}, quiet);
 }
 
 // Sand height of every pixel column of a class map (CV_8U, 255 = no sand).

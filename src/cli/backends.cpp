@@ -1,6 +1,9 @@
 // The one place that chooses a backend from the scene's mode (STYLE.md:
 // pbrt-v4's RenderCPU / RenderWavefront choice).
 #include "lattice/lattice_simulator.h"
+#if SANDPIC_WITH_BULLET
+#include "physics/dem_simulator.h"
+#endif
 #include "src/errors.h"
 #include "src/simulator.h"
 
@@ -11,7 +14,11 @@ std::unique_ptr<Simulator> make_simulator(const Scene& s) {
     case Mode::Lattice:
       return make_lattice_simulator();
     case Mode::Dem:
-      throw key_error("mode", "'dem' is not in this build of sandpic yet; use mode=lattice");
+#if SANDPIC_WITH_BULLET
+      return make_dem_simulator();
+#else
+      throw key_error("mode", "'dem' needs a build with Bullet (cmake -DSANDPIC_WITH_BULLET=ON); use mode=lattice");
+#endif
   }
   throw key_error("mode", "unknown mode");
 }

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The CLI as a user runs it: exit codes, one-line errors that name the key or
 # file, outputs written whole or not at all, same seed = same bytes.
-# Usage: test_cli.sh SANDPIC_BINARY PROJECT_ROOT
+# Usage: test_cli.sh SANDPIC_BINARY PROJECT_ROOT with-bullet|without-bullet
 set -u
 BIN=$1
 ROOT=$2
+BULLET=${3:-with-bullet}
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 passed=0 failed=0
@@ -64,8 +65,20 @@ one_line; err_has "no/such/dir"
 expect 2 "no -o" -- "$BIN" render
 expect 2 "bad scale" -- "$BIN" render -o "$T/e.png" --scale -1
 one_line; absent "$T/e.png"
-expect 2 "dem without Bullet" -- "$BIN" render -o "$T/e.png" --mode dem
-one_line; err_has "mode"; absent "$T/e.png"
+TINY=(--set window.width=60 --set window.height=60 --set region.height=5 --set segment.semi_major_max=40
+      --set segment.semi_major_min=20 --set release.outlet_width_mm=4)
+if [ "$BULLET" = with-bullet ]; then
+  expect 0 "dem" -- "$BIN" render -o "$T/dem.png" --mode dem "${TINY[@]}" --stats "$T/dem.json" --stages "$T/dst"
+  is_png "$T/dem.png"; is_png "$T/dst/6-layers.png"
+  if grep -q '"in_picture": 300' "$T/dem.json"; then ok; else bad "dem stats: $(cat "$T/dem.json")"; fi
+  echo keep >"$T/keep.png"
+  expect 3 "dem divergence" -- "$BIN" render -o "$T/keep.png" --mode dem "${TINY[@]}" --set dem.max_overlap=0.01
+  one_line; err_has "overlap"; err_has "physics seed"
+  if [ "$(cat "$T/keep.png")" = keep ]; then ok; else bad "a diverged run overwrote the output"; fi
+else
+  expect 2 "dem without Bullet" -- "$BIN" render -o "$T/e.png" --mode dem
+  one_line; err_has "Bullet"; absent "$T/e.png"
+fi
 
 # Every example renders (scaled down).
 for scene in "$ROOT"/examples/*.json; do

@@ -9,12 +9,8 @@
 namespace sandpic {
 namespace {
 
-double pile_angle(Scene s) {
-  Initialization init = initialize(s);
-  Segmentation seg = segment(s, init.tessellation);
-  FallingOrder order = falling_order(seg, init.grains, s.layout());
-  Progress quiet(false);
-  SimResult r = make_lattice_simulator()->simulate(SimInput{s, init.grains, seg, order}, quiet);
+double pile_angle(const Scene& s) {
+  SimResult r = test::simulate_scene(s, *make_lattice_simulator());
   return test::flank_angle_deg(test::column_heights(r.class_map));
 }
 

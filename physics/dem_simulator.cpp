@@ -1,0 +1,455 @@
+// The DEM backend. Each step is a short fixed list of named stages:
+//   release → insert → water → step (Bullet) → [every cycle] classify → freeze → guard
+// paper §7: release toward each unit's outlet; §8.1: the three-layer model.
+#include "physics/dem_simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <queue>
+
+#include "physics/layers.h"
+#include "physics/raster.h"
+#include "physics/water.h"
+#include "physics/world.h"
+#include "src/errors.h"
+#include "src/release.h"
+
+namespace sandpic {
+
+double dem_time_step(const Scene& s) {
+  Water w = water_model(s);
+  double fastest = *std::max_element(w.terminal_px_s.begin(), w.terminal_px_s.end());
+  double smallest = 1e9;
+  for (int k = 0; k < kClasses; ++k) smallest = std::min(smallest, grain_diameter_px(s, k));
+  return s.dem.step_diameters * smallest / std::max(fastest, 1e-9);
+}
+
+namespace {
+
+struct Arrival {
+  double time;
+  int64_t order;  // index in the falling order: ties keep the falling order
+  bool operator>(const Arrival& o) const { return time != o.time ? time > o.time : order > o.order; }
+};
+
+class DemRun {
+ public:
+  DemRun(const SimInput& in, Progress& progress);
+  SimResult run();
+
+ private:
+  void release_stage();
+  void insert_stage();
+  void water_stage();
+  void classify_stage();
+  void freeze_stage();
+  void guard_stage();
+  void record(int32_t id, Vec2 p);
+  void make_static(int32_t id, Vec2 p);
+  double surface(double x, double r) const;
+  bool crowded(Vec2 p, double r) const;
+  void index_bodies();
+  int cell_of(Vec2 p) const;
+  void sample_layers();
+  cv::Mat layer_map() const;
+
+  const Scene& s_;
+  const SimInput& in_;
+  Progress& progress_;
+  const int W_, H_;
+  const int64_t n_;
+  const Layers layers_;
+  Water water_;
+  ReleaseModel model_;
+  std::vector<Outlet> outlets_;
+  std::vector<int32_t> unit_of_order_;
+  std::array<double, kClasses> radius_{}, mass_{}, decay_{};
+  double dt_, small_d_;
+  LayerRule rule_;
+  LayerHeights heights_;
+  GrainWorld world_;
+
+  // Per grain id.
+  std::vector<Layer> layer_;
+  std::vector<int32_t> slot_;
+  std::vector<int32_t> rested_;
+  std::vector<Vec2> last_;
+  std::vector<float> x_, y_;  // settled centre, window px (y down)
+
+  std::vector<int32_t> dynamic_, statics_;  // ids, in the order they entered the layer
+  std::priority_queue<Arrival, std::vector<Arrival>, std::greater<>> arrivals_;
+  std::vector<float> top_;      // surface of settled sand per column (px, y up)
+  std::vector<float> landed_;   // tops of slow dynamic grains, per column, this cycle
+  int64_t released_ = 0, inserted_ = 0, settled_ = 0, fixed_ = 0, delayed_ = 0;
+  double t_ = 0, energy_budget_ = 0, deepest_ = 0;
+  int64_t steps_ = 0;
+  size_t peak_bodies_ = 0;
+  ordered_json samples_ = ordered_json::array();
+  cv::Mat layer_snapshot_;
+  // The neighbourhood index of insert_stage (cells of kCell px, 2 > any diameter).
+  static constexpr double kCell = 2.0;
+  int cells_x_ = 0, cells_y_ = 0;
+  std::vector<int32_t> cell_head_, cell_next_;
+  std::vector<Vec2> cell_pos_;
+};
+
+DemRun::DemRun(const SimInput& in, Progress& progress)
+    : s_(in.scene),
+      in_(in),
+      progress_(progress),
+      W_(in.scene.window.width),
+      H_(in.scene.window.height),
+      n_(int64_t(in.order.grain.size())),
+      layers_(in.scene.dem.layers),
+      water_(water_model(in.scene)),
+      model_(release_model(in.scene)),
+      dt_(dem_time_step(in.scene)),
+      heights_(in.scene.window.width),
+      world_(W_, H_,
+             [&] {
+               std::array<double, kClasses> r;
+               for (int k = 0; k < kClasses; ++k) r[k] = grain_diameter_px(in.scene, k) / 2;
+               return r;
+             }(),
+             [&] {
+               std::array<double, kClasses> m;  // in g per px³ units: only ratios matter
+               for (int k = 0; k < kClasses; ++k)
+                 m[k] = in.scene.grains.density_g_cm3[k] * std::pow(grain_diameter_px(in.scene, k), 3);
+               return m;
+             }(),
+             std::array<double, kClasses>{},  // gravity is the water stage's
+             GrainMaterial{in.scene.physics.friction, in.scene.physics.restitution, in.scene.dem.rolling_resistance,
+                           in.scene.dem.solver_iterations}) {
+  small_d_ = 1e9;
+  for (int k = 0; k < kClasses; ++k) {
+    radius_[k] = grain_diameter_px(s_, k) / 2;
+    mass_[k] = s_.grains.density_g_cm3[k] * std::pow(2 * radius_[k], 3);
+    decay_[k] = std::exp(-water_.drag_per_s[k] * dt_);
+    small_d_ = std::min(small_d_, 2 * radius_[k]);
+  }
+  for (const Unit& u : in.seg.units) outlets_.push_back(outlet(model_, u));
+  for (size_t u = 0; u < in.seg.units.size(); ++u)
+    for (int64_t i = in.order.unit_begin[u]; i < in.order.unit_begin[u + 1]; ++i) unit_of_order_.push_back(int32_t(u));
+  rule_.rest_px = s_.dem.rest_displacement * small_d_;
+  rule_.rest_cycles_any_slope = s_.dem.rest_cycles_any_slope;
+  rule_.slope_limit_rad = s_.dem.slope_limit_deg * std::numbers::pi / 180;
+  rule_.band_px = s_.dem.static_thickness_mm * px_per_mm(s_);
+  const size_t n = size_t(in.grains.size());
+  layer_.assign(n, Layer::Waiting);
+  slot_.assign(n, -1);
+  rested_.assign(n, 0);
+  last_.assign(n, Vec2(NAN, NAN));
+  x_.assign(n, NAN);
+  y_.assign(n, NAN);
+  top_.assign(size_t(W_ + 1), 0.0f);
+  landed_.assign(size_t(W_ + 1), 0.0f);
+  cells_x_ = int(std::ceil(W_ / kCell)) + 1;
+  cells_y_ = int(std::ceil(H_ / kCell)) + 1;
+  cell_head_.assign(size_t(cells_x_) * cells_y_, -1);
+}
+
+double DemRun::surface(double x, double r) const {
+  int from = std::max(0, int(std::floor(x - r))), to = std::min(W_, int(std::ceil(x + r)));
+  float h = 0;
+  for (int j = from; j <= to; ++j) h = std::max({h, top_[size_t(j)], landed_[size_t(j)]});
+  return h;
+}
+
+// Stage: grains leave their units at dem.release_rate in falling order and
+// are scheduled to arrive near the pile: Eq. 1-2 to the outlet, then an
+// analytic fall at their settling speed (nothing to collide with up there).
+void DemRun::release_stage() {
+  while (released_ < n_ && double(released_) / s_.dem.release_rate <= t_) {
+    const int32_t id = in_.order.grain[size_t(released_)];
+    const int k = in_.grains.cls[size_t(id)];
+    const Outlet& o = outlets_[size_t(unit_of_order_[size_t(released_)])];
+    ReleasePath path = release(model_, o, in_.grains, id);
+    double outlet_up = H_ - o.centre.y();
+    double drop = outlet_up - (surface(path.exit_x, radius_[k]) + s_.dem.insert_gap_diameters * 2 * radius_[k]);
+    double fall = water_.terminal_px_s[k] > 0 ? std::max(0.0, drop) / water_.terminal_px_s[k] : 0;
+    arrivals_.push({t_ + path.t + fall, released_});
+    ++released_;
+  }
+}
+
+// Bodies bucketed by 2-px cell, rebuilt on the steps that insert: an
+// arriving grain only looks at its neighbourhood.
+void DemRun::index_bodies() {
+  std::fill(cell_head_.begin(), cell_head_.end(), -1);
+  cell_next_.resize(dynamic_.size());
+  cell_pos_.resize(dynamic_.size());
+  for (size_t i = 0; i < dynamic_.size(); ++i) {
+    Vec2 p = world_.position(slot_[size_t(dynamic_[i])]);
+    cell_pos_[i] = p;
+    int c = cell_of(p);
+    cell_next_[i] = c >= 0 ? cell_head_[size_t(c)] : -1;
+    if (c >= 0) cell_head_[size_t(c)] = int32_t(i);
+  }
+}
+
+int DemRun::cell_of(Vec2 p) const {
+  int cx = int(std::floor(p.x() / kCell)), cy = int(std::floor(p.y() / kCell));
+  if (cx < 0 || cy < 0 || cx >= cells_x_ || cy >= cells_y_) return -1;
+  return cy * cells_x_ + cx;
+}
+
+bool DemRun::crowded(Vec2 p, double r) const {
+  const int cx = int(std::floor(p.x() / kCell)), cy = int(std::floor(p.y() / kCell));
+  for (int y = std::max(0, cy - 1); y <= std::min(cells_y_ - 1, cy + 1); ++y)
+    for (int x = std::max(0, cx - 1); x <= std::min(cells_x_ - 1, cx + 1); ++x)
+      for (int32_t i = cell_head_[size_t(y * cells_x_ + x)]; i >= 0; i = cell_next_[size_t(i)]) {
+        double reach = r + radius_[in_.grains.cls[size_t(dynamic_[size_t(i)])]];
+        if ((cell_pos_[size_t(i)] - p).squaredNorm() < reach * reach) return true;
+      }
+  return false;
+}
+
+// Stage: an arriving grain becomes a body a few diameters above the pile,
+// at its settling speed; if another grain is in the way it waits a step.
+void DemRun::insert_stage() {
+  if (arrivals_.empty() || arrivals_.top().time > t_) return;
+  index_bodies();
+  std::vector<Arrival> later;
+  while (!arrivals_.empty() && arrivals_.top().time <= t_) {
+    Arrival a = arrivals_.top();
+    arrivals_.pop();
+    const int32_t id = in_.order.grain[size_t(a.order)];
+    const int k = in_.grains.cls[size_t(id)];
+    const double r = radius_[k];
+    const Outlet& o = outlets_[size_t(unit_of_order_[size_t(a.order)])];
+    double x = std::clamp(exit_x(model_, o, id), r, W_ - r);
+    double y = std::min(surface(x, r) + s_.dem.insert_gap_diameters * 2 * r, H_ - r);
+    if (crowded(Vec2(x, y), r)) {
+      later.push_back({t_ + dt_, a.order});
+      ++delayed_;
+      continue;
+    }
+    Vec2 v(0, -water_.terminal_px_s[k]);
+    slot_[size_t(id)] = world_.add_body(k, Vec2(x, y), v);
+    layer_[size_t(id)] = Layer::Dynamic;
+    dynamic_.push_back(id);
+    cell_pos_.push_back(Vec2(x, y));  // visible to the next arrivals of this step
+    int c = cell_of(Vec2(x, y));
+    cell_next_.push_back(c >= 0 ? cell_head_[size_t(c)] : -1);
+    if (c >= 0) cell_head_[size_t(c)] = int32_t(dynamic_.size() - 1);
+    ++inserted_;
+    energy_budget_ += mass_[k] * (0.5 * v.squaredNorm() + water_.gravity_px_s2[k] * y);
+  }
+  for (const Arrival& a : later) arrivals_.push(a);
+  peak_bodies_ = std::max(peak_bodies_, dynamic_.size());
+}
+
+// Stage: gravity with buoyancy, and drag, integrated exactly for linear drag:
+// v ← v_t + (v − v_t)·e^(−k dt). Bullet then solves the contacts.
+void DemRun::water_stage() {
+  for (int32_t id : dynamic_) {
+    const int k = in_.grains.cls[size_t(id)];
+    const int slot = slot_[size_t(id)];
+    Vec2 v = world_.velocity(slot);
+    if (water_.drag_per_s[k] > 0) {
+      Vec2 vt(0, -water_.terminal_px_s[k]);
+      v = vt + (v - vt) * decay_[k];
+    } else {
+      v.y() -= water_.gravity_px_s2[k] * dt_;
+    }
+    world_.set_velocity(slot, v);
+  }
+}
+
+void DemRun::record(int32_t id, Vec2 p) {
+  x_[size_t(id)] = float(p.x());
+  y_[size_t(id)] = float(H_ - p.y());
+}
+
+void DemRun::make_static(int32_t id, Vec2 p) {
+  const int k = in_.grains.cls[size_t(id)];
+  world_.remove_body(slot_[size_t(id)]);
+  record(id, p);
+  ++settled_;
+  if (layers_ == Layers::Bcre) {  // BCRE: the static layer is a height field
+    world_.raise_ground(p, radius_[k]);
+    slot_[size_t(id)] = -1;
+  } else {
+    slot_[size_t(id)] = world_.add_static(k, p);
+    statics_.push_back(id);
+  }
+  layer_[size_t(id)] = Layer::Static;
+  const double r = radius_[k];
+  for (int j = std::max(0, int(std::floor(p.x() - r))); j <= std::min(W_, int(std::ceil(p.x() + r))); ++j)
+    top_[size_t(j)] = std::max(top_[size_t(j)], float(p.y() + r));
+}
+
+// Stage (every cycle): paper Algorithm 2, lines 1-12. Rest is judged by the
+// displacement over the cycle, not the paper's 3×10⁻⁵ m/s, which is far below
+// a solver's resting jitter.
+void DemRun::classify_stage() {
+  std::fill(landed_.begin(), landed_.end(), 0.0f);
+  std::vector<int32_t> still;
+  still.reserve(dynamic_.size());
+  for (int32_t id : dynamic_) {
+    const int k = in_.grains.cls[size_t(id)];
+    Vec2 p = world_.position(slot_[size_t(id)]);
+    Vec2& last = last_[size_t(id)];
+    double moved = std::isfinite(last.x()) ? (p - last).norm() : INFINITY;
+    rested_[size_t(id)] = moved < rule_.rest_px ? rested_[size_t(id)] + 1 : 0;  // rest_px: small-grain diameters
+    last = p;
+    // A grain buried under the static band (jostled, never quite at rest)
+    // is out of reach of the flow: it joins the static layer.
+    const bool buried = p.y() < heights_.hs[size_t(heights_.column(p.x()))] - rule_.band_px;
+    if (layers_ != Layers::AllDynamic &&
+        (buried || becomes_static(heights_, rule_, p.x(), p.y(), moved, rested_[size_t(id)]))) {
+      make_static(id, p);
+      continue;
+    }
+    if (world_.velocity(slot_[size_t(id)]).norm() < 0.3 * water_.terminal_px_s[k]) {
+      int j = std::clamp(int(std::lround(p.x())), 0, W_);
+      landed_[size_t(j)] = std::max(landed_[size_t(j)], float(p.y() + radius_[k]));
+    }
+    still.push_back(id);
+  }
+  dynamic_.swap(still);
+}
+
+// Stage (every cycle): Algorithm 2, lines 13-21. A fixed grain leaves the
+// world; the height field under the static layer rises to its top.
+void DemRun::freeze_stage() {
+  if (layers_ != Layers::Three) return;
+  std::vector<int32_t> still;
+  still.reserve(statics_.size());
+  for (int32_t id : statics_) {
+    Vec2 p(x_[size_t(id)], H_ - y_[size_t(id)]);
+    if (becomes_fixed(heights_, rule_, p.x(), p.y())) {
+      world_.remove_static(slot_[size_t(id)]);
+      world_.raise_ground(p, 0);  // up to its centre: the static band above rests on it
+      slot_[size_t(id)] = -1;
+      layer_[size_t(id)] = Layer::Fixed;
+      ++fixed_;
+      continue;
+    }
+    still.push_back(id);
+  }
+  statics_.swap(still);
+}
+
+std::string at(double t, int64_t steps) {
+  return " at t = " + std::to_string(t) + " s (step " + std::to_string(steps) + ")";
+}
+
+// Stage (every cycle): a NaN, a grain through a wall, a deep overlap or more
+// kinetic energy than gravity could have given stops the run.
+void DemRun::guard_stage() {
+  double kinetic = 0;
+  for (int32_t id : dynamic_) {
+    const int k = in_.grains.cls[size_t(id)];
+    Vec2 p = world_.position(slot_[size_t(id)]), v = world_.velocity(slot_[size_t(id)]);
+    if (!p.allFinite() || !v.allFinite())
+      throw SimulationError("a grain's position became NaN" + at(t_, steps_) + "; lower dem.step_diameters");
+    if (p.x() < -radius_[k] || p.x() > W_ + radius_[k] || p.y() < -2 * radius_[k])
+      throw SimulationError("a grain left the window through a wall (at " + std::to_string(p.x()) + ", " +
+                            std::to_string(p.y()) + " px)" + at(t_, steps_) +
+                            "; lower dem.step_diameters or raise dem.solver_iterations");
+    kinetic += 0.5 * mass_[k] * v.squaredNorm();
+  }
+  deepest_ = std::max(deepest_, world_.deepest_overlap());
+  if (deepest_ > s_.dem.max_overlap * small_d_)
+    throw SimulationError("grains overlap by " + std::to_string(deepest_) + " px" + at(t_, steps_) +
+                          "; lower dem.step_diameters or raise dem.solver_iterations");
+  if (kinetic > energy_budget_ * 1.0001 + 1e-9)
+    throw SimulationError("kinetic energy exceeds the energy released" + at(t_, steps_) +
+                          "; lower dem.step_diameters or physics.restitution");
+}
+
+void DemRun::sample_layers() {
+  samples_.push_back({{"t_s", t_},
+                      {"waiting", n_ - inserted_},
+                      {"dynamic", dynamic_.size()},
+                      {"static", settled_ - fixed_},
+                      {"fixed", fixed_}});
+}
+
+// paper Fig. 2i, 11: dynamic grains red, static blue, fixed black.
+cv::Mat DemRun::layer_map() const {
+  std::vector<float> x(x_), y(y_);
+  std::vector<uint8_t> value(layer_.size(), 255);
+  for (size_t i = 0; i < layer_.size(); ++i) {
+    if (layer_[i] == Layer::Dynamic) {
+      Vec2 p = world_.position(slot_[i]);
+      x[i] = float(p.x()), y[i] = float(H_ - p.y());
+    }
+    value[i] = layer_[i] == Layer::Waiting ? 255 : uint8_t(layer_[i]) - 1;
+  }
+  cv::Mat codes = class_map_from_grains(W_, H_, x, y, value, 1.0, 255);
+  cv::Mat img(H_, W_, CV_8UC3, cv::Scalar(255, 255, 255));
+  const cv::Vec3b colour[3] = {{40, 40, 220}, {220, 120, 40}, {20, 20, 20}};  // BGR
+  for (int r = 0; r < H_; ++r)
+    for (int c = 0; c < W_; ++c)
+      if (uint8_t v = codes.at<uint8_t>(r, c); v < 3) img.at<cv::Vec3b>(r, c) = colour[v];
+  return img;
+}
+
+SimResult DemRun::run() {
+  const int cycle = s_.dem.cycle_steps;
+  // A scene that never settles is a failure, not a hang: the release lasts
+  // n/rate, and settling gets a generous allowance after it.
+  const double limit = double(n_) / s_.dem.release_rate + 60.0 + 2000 * cycle * dt_;
+  progress_.start("dem", n_);
+  while (released_ < n_ || !arrivals_.empty() || !dynamic_.empty()) {
+    release_stage();
+    insert_stage();
+    water_stage();
+    world_.step(dt_);
+    t_ += dt_;
+    ++steps_;
+    if (steps_ % cycle) continue;
+    classify_stage();
+    freeze_stage();
+    guard_stage();
+    if (samples_.size() < 100000 && steps_ % (cycle * 10) == 0) sample_layers();
+    if (layer_snapshot_.empty() && released_ >= n_ / 2) layer_snapshot_ = layer_map();
+    if (layers_ == Layers::AllDynamic && released_ == n_ && arrivals_.empty()) {
+      bool all_rest = std::all_of(dynamic_.begin(), dynamic_.end(), [&](int32_t id) { return rested_[size_t(id)] >= 2; });
+      if (all_rest) break;
+    }
+    progress_.update(layers_ == Layers::AllDynamic ? inserted_ : settled_);
+    if (t_ > limit)
+      throw SimulationError(std::to_string(dynamic_.size()) + " grains still moving" + at(t_, steps_) +
+                            "; raise dem.rest_displacement or lower dem.slope_limit_deg");
+  }
+  progress_.finish();
+  for (int32_t id : dynamic_) record(id, world_.position(slot_[size_t(id)]));
+  sample_layers();
+
+  SimResult out;
+  out.x = x_;
+  out.y = y_;
+  std::vector<uint8_t> cls(in_.grains.cls.begin(), in_.grains.cls.end());
+  out.class_map = class_map_from_grains(W_, H_, x_, y_, cls, 1.2, kNoSand);
+  if (!layer_snapshot_.empty()) out.stages.emplace_back("6-layers.png", layer_snapshot_);
+  // Thin the samples to about 200 for the stats.
+  ordered_json thin = ordered_json::array();
+  size_t every = std::max<size_t>(1, samples_.size() / 200);
+  for (size_t i = 0; i < samples_.size(); i += every) thin.push_back(samples_[i]);
+  if (!samples_.empty() && (samples_.size() - 1) % every) thin.push_back(samples_.back());
+  out.stats["layers"] = layers_ == Layers::Three ? "three" : layers_ == Layers::Bcre ? "bcre" : "all-dynamic";
+  out.stats["time_step_s"] = dt_;
+  out.stats["steps"] = steps_;
+  out.stats["simulated_s"] = t_;
+  out.stats["peak_bodies"] = peak_bodies_;
+  out.stats["insertions_delayed"] = delayed_;
+  out.stats["deepest_overlap_px"] = deepest_;
+  out.stats["terminal_speed_px_s"] = water_.terminal_px_s;
+  out.stats["layer_counts"] = thin;
+  return out;
+}
+
+class DemSimulator final : public Simulator {
+ public:
+  SimResult simulate(const SimInput& in, Progress& progress) override { return DemRun(in, progress).run(); }
+};
+
+}  // namespace
+
+std::unique_ptr<Simulator> make_dem_simulator() { return std::make_unique<DemSimulator>(); }
+
+}  // namespace sandpic

@@ -1,0 +1,212 @@
+#include "physics/world.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <btBulletDynamicsCommon.h>
+#include <BulletCollision/CollisionShapes/btHeightfieldTerrainShape.h>
+
+namespace sandpic {
+namespace {
+
+// Bullet multiplies the two bodies' friction and restitution at a contact;
+// each body gets the square root, so a contact gets the scene's value. For
+// rolling friction (a length here: resistance × radius) Bullet's own
+// combination mixes it with sliding friction, so the mean is used instead.
+btScalar mean_rolling(const btCollisionObject* a, const btCollisionObject* b) {
+  return (a->getRollingFriction() + b->getRollingFriction()) / 2;
+}
+
+}  // namespace
+
+struct GrainWorld::Impl {
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher{&config};
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
+
+  std::array<std::unique_ptr<btSphereShape>, kClasses> spheres;
+  std::array<btVector3, kClasses> inertia;
+  std::array<double, kClasses> mass{}, gravity{}, radius{};
+  GrainMaterial material;
+  std::vector<std::unique_ptr<btRigidBody>> bodies;
+  std::vector<int> free_bodies;
+  std::vector<std::unique_ptr<btCollisionObject>> statics;
+  std::vector<int> free_statics;
+
+  std::vector<float> ground;  // 2 rows of width+1 heights
+  std::unique_ptr<btHeightfieldTerrainShape> ground_shape;
+  std::unique_ptr<btBoxShape> wall_shape, floor_shape;
+  std::vector<std::unique_ptr<btCollisionObject>> fixed_objects;
+  int width = 0, height = 0;
+
+  void set_surface(btCollisionObject& o, double r) const {
+    o.setFriction(btScalar(std::sqrt(material.friction)));
+    o.setRestitution(btScalar(std::sqrt(material.restitution)));
+    o.setRollingFriction(btScalar(material.rolling_resistance * r));
+  }
+
+  void add_fixed(btCollisionShape* shape, btVector3 at) {
+    auto o = std::make_unique<btCollisionObject>();
+    o->setCollisionShape(shape);
+    btTransform t;
+    t.setIdentity();
+    t.setOrigin(at);
+    o->setWorldTransform(t);
+    set_surface(*o, radius[0]);
+    world.addCollisionObject(o.get(), btBroadphaseProxy::StaticFilter,
+                             btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+    fixed_objects.push_back(std::move(o));
+  }
+};
+
+GrainWorld::GrainWorld(int width, int height, const std::array<double, kClasses>& radius_px,
+                       const std::array<double, kClasses>& mass, const std::array<double, kClasses>& gravity_px_s2,
+                       const GrainMaterial& material)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  gCalculateCombinedRollingFrictionCallback = &mean_rolling;
+  m.width = width, m.height = height, m.material = material, m.mass = mass, m.gravity = gravity_px_s2;
+  m.radius = radius_px;
+  m.world.setGravity(btVector3(0, 0, 0));  // per body: buoyancy differs by class
+  m.world.getSolverInfo().m_numIterations = material.solver_iterations;
+  for (int k = 0; k < kClasses; ++k) {
+    m.spheres[k] = std::make_unique<btSphereShape>(btScalar(radius_px[k]));
+    m.spheres[k]->calculateLocalInertia(btScalar(mass[k]), m.inertia[k]);
+  }
+  // The floor and the fixed layer's top: a height field two rows deep in z,
+  // the grains' plane (z = 0) running down its middle.
+  m.ground.assign(size_t(2 * (width + 1)), 0.0f);
+  m.ground_shape = std::make_unique<btHeightfieldTerrainShape>(width + 1, 2, m.ground.data(), btScalar(0),
+                                                                btScalar(height), 1, false);
+  m.add_fixed(m.ground_shape.get(), btVector3(btScalar(width / 2.0), btScalar(height / 2.0), 0));
+  // The window's sides, as tall as twice the window, and a solid floor
+  // under the height field (a triangle surface alone lets a pressed sphere through).
+  m.wall_shape = std::make_unique<btBoxShape>(btVector3(10, btScalar(height), 10));
+  m.add_fixed(m.wall_shape.get(), btVector3(-10, btScalar(height), 0));
+  m.add_fixed(m.wall_shape.get(), btVector3(btScalar(width + 10), btScalar(height), 0));
+  m.floor_shape = std::make_unique<btBoxShape>(btVector3(btScalar(width), 10, 10));
+  m.add_fixed(m.floor_shape.get(), btVector3(btScalar(width / 2.0), -10, 0));
+}
+
+GrainWorld::~GrainWorld() {
+  Impl& m = *impl_;
+  for (auto& b : m.bodies)
+    if (b) m.world.removeRigidBody(b.get());
+  for (auto& s : m.statics)
+    if (s) m.world.removeCollisionObject(s.get());
+  for (auto& o : m.fixed_objects) m.world.removeCollisionObject(o.get());
+}
+
+int GrainWorld::add_body(int cls, Vec2 p, Vec2 v) {
+  Impl& m = *impl_;
+  btRigidBody::btRigidBodyConstructionInfo info(btScalar(m.mass[cls]), nullptr, m.spheres[cls].get(), m.inertia[cls]);
+  info.m_startWorldTransform.setIdentity();
+  info.m_startWorldTransform.setOrigin(btVector3(btScalar(p.x()), btScalar(p.y()), 0));
+  auto body = std::make_unique<btRigidBody>(info);
+  m.set_surface(*body, m.radius[cls]);
+  body->setLinearFactor(btVector3(1, 1, 0));   // in the picture's plane
+  body->setAngularFactor(btVector3(0, 0, 1));  // rolling in the plane only
+  body->setActivationState(DISABLE_DEACTIVATION);  // the layer model decides rest, not Bullet
+  body->setFlags(body->getFlags() | BT_DISABLE_WORLD_GRAVITY);
+  m.world.addRigidBody(body.get());
+  body->setGravity(btVector3(0, btScalar(-m.gravity[cls]), 0));
+  body->setLinearVelocity(btVector3(btScalar(v.x()), btScalar(v.y()), 0));
+  int slot;
+  if (!m.free_bodies.empty()) {
+    slot = m.free_bodies.back();
+    m.free_bodies.pop_back();
+    m.bodies[size_t(slot)] = std::move(body);
+  } else {
+    slot = int(m.bodies.size());
+    m.bodies.push_back(std::move(body));
+  }
+  ++live_bodies_;
+  return slot;
+}
+
+void GrainWorld::remove_body(int slot) {
+  Impl& m = *impl_;
+  m.world.removeRigidBody(m.bodies[size_t(slot)].get());
+  m.bodies[size_t(slot)].reset();
+  m.free_bodies.push_back(slot);
+  --live_bodies_;
+}
+
+Vec2 GrainWorld::position(int slot) const {
+  const btVector3& o = impl_->bodies[size_t(slot)]->getWorldTransform().getOrigin();
+  return {o.x(), o.y()};
+}
+
+Vec2 GrainWorld::velocity(int slot) const {
+  const btVector3& v = impl_->bodies[size_t(slot)]->getLinearVelocity();
+  return {v.x(), v.y()};
+}
+
+void GrainWorld::set_velocity(int slot, Vec2 v) {
+  impl_->bodies[size_t(slot)]->setLinearVelocity(btVector3(btScalar(v.x()), btScalar(v.y()), 0));
+}
+
+int GrainWorld::add_static(int cls, Vec2 p) {
+  Impl& m = *impl_;
+  auto o = std::make_unique<btCollisionObject>();
+  o->setCollisionShape(m.spheres[cls].get());
+  btTransform t;
+  t.setIdentity();
+  t.setOrigin(btVector3(btScalar(p.x()), btScalar(p.y()), 0));
+  o->setWorldTransform(t);
+  m.set_surface(*o, m.radius[cls]);
+  m.world.addCollisionObject(o.get(), btBroadphaseProxy::StaticFilter,
+                             btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+  int slot;
+  if (!m.free_statics.empty()) {
+    slot = m.free_statics.back();
+    m.free_statics.pop_back();
+    m.statics[size_t(slot)] = std::move(o);
+  } else {
+    slot = int(m.statics.size());
+    m.statics.push_back(std::move(o));
+  }
+  return slot;
+}
+
+void GrainWorld::remove_static(int slot) {
+  Impl& m = *impl_;
+  m.world.removeCollisionObject(m.statics[size_t(slot)].get());
+  m.statics[size_t(slot)].reset();
+  m.free_statics.push_back(slot);
+}
+
+void GrainWorld::raise_ground(Vec2 p, double r) {
+  Impl& m = *impl_;
+  int from = std::max(0, int(std::ceil(p.x() - r))), to = std::min(m.width, int(std::floor(p.x() + r)));
+  if (r == 0) from = to = std::clamp(int(std::lround(p.x())), 0, m.width);
+  for (int j = from; j <= to; ++j) {
+    double dx = j - p.x();
+    float top = float(std::min<double>(m.height, p.y() + std::sqrt(std::max(0.0, r * r - dx * dx))));
+    for (int row = 0; row < 2; ++row) {
+      float& g = m.ground[size_t(row * (m.width + 1) + j)];
+      g = std::max(g, top);
+    }
+  }
+}
+
+double GrainWorld::ground(double x) const {
+  int j = std::clamp(int(std::lround(x)), 0, impl_->width);
+  return impl_->ground[size_t(j)];
+}
+
+void GrainWorld::step(double dt) { impl_->world.stepSimulation(btScalar(dt), 0, btScalar(dt)); }
+
+double GrainWorld::deepest_overlap() const {
+  double deepest = 0;
+  btDispatcher& d = impl_->dispatcher;
+  for (int i = 0; i < d.getNumManifolds(); ++i) {
+    const btPersistentManifold* pm = d.getManifoldByIndexInternal(i);
+    for (int c = 0; c < pm->getNumContacts(); ++c) deepest = std::max(deepest, double(-pm->getContactPoint(c).getDistance()));
+  }
+  return deepest;
+}
+
+}  // namespace sandpic

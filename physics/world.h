@@ -1,0 +1,54 @@
+#pragma once
+// The Bullet world of the DEM mode: grains as spheres kept in the picture's
+// plane, the window's walls, static grain colliders, and one height field
+// that is the floor and, raised as grains are fixed, the fixed layer's top.
+// Bullet units: one per pixel, y up, z out of the picture.
+#include <memory>
+#include <vector>
+
+#include "src/grains.h"
+
+class btCollisionObject;
+class btRigidBody;
+
+namespace sandpic {
+
+struct GrainMaterial {
+  double friction = 0.4, restitution = 0.1, rolling_resistance = 0.3;
+  int solver_iterations = 10;
+};
+
+class GrainWorld {
+ public:
+  GrainWorld(int width, int height, const std::array<double, kClasses>& radius_px,
+             const std::array<double, kClasses>& mass, const std::array<double, kClasses>& gravity_px_s2,
+             const GrainMaterial& material);
+  ~GrainWorld();
+  GrainWorld(const GrainWorld&) = delete;
+  GrainWorld& operator=(const GrainWorld&) = delete;
+
+  int add_body(int cls, Vec2 position, Vec2 velocity);  // returns a slot
+  void remove_body(int slot);
+  Vec2 position(int slot) const;
+  Vec2 velocity(int slot) const;
+  void set_velocity(int slot, Vec2 v);
+
+  int add_static(int cls, Vec2 position);  // a collider that never moves
+  void remove_static(int slot);
+
+  // Raises the height field under a grain of radius r centred at p to the
+  // grain's upper outline (r = 0: to p itself, at the nearest column).
+  void raise_ground(Vec2 p, double r);
+  double ground(double x) const;
+
+  void step(double dt);
+  double deepest_overlap() const;  // px, over all contacts
+  int bodies() const { return live_bodies_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  int live_bodies_ = 0;
+};
+
+}  // namespace sandpic

@@ -1,0 +1,68 @@
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "physics/dem_simulator.h"
+#include "src/errors.h"
+#include "src/pipeline.h"
+#include "tests/test_util.h"
+
+namespace sandpic {
+namespace {
+
+// About 700 grains: a one-ellipse scene small enough for the suite.
+Scene small_dem_scene(int width = 140, int region = 5) {
+  Scene s = test::one_ellipse_scene(width, 90, region);
+  s.release.outlet_width_mm = 4;
+  s.mode = Mode::Dem;
+  return s;
+}
+
+RunResult run(const Scene& s) { return run_pipeline(s, *make_dem_simulator(), RunOptions{true, false}); }
+
+TEST(DemSimulator, EveryGrainSettlesInThePictureInEveryLayerModel) {
+  for (Layers l : {Layers::Three, Layers::Bcre, Layers::AllDynamic}) {
+    Scene s = small_dem_scene(l == Layers::AllDynamic ? 60 : 140);  // all-dynamic is costly
+    s.dem.layers = l;
+    RunResult r = run(s);
+    EXPECT_EQ(r.stats["grains"]["in_picture"], r.stats["grains"]["total"]);
+    EXPECT_GT(r.stats["backend"]["steps"].get<int64_t>(), 0);
+    EXPECT_LT(r.stats["backend"]["deepest_overlap_px"].get<double>(), 0.56);
+    if (l == Layers::Three) {
+      auto last = r.stats["backend"]["layer_counts"].back();
+      EXPECT_GT(last["fixed"].get<int64_t>(), 0);
+      EXPECT_EQ(last["dynamic"].get<int64_t>(), 0);
+    }
+  }
+}
+
+TEST(DemSimulator, SameSeedSamePictureOtherPhysicsSeedOtherPicture) {
+  Scene s = small_dem_scene();
+  RunResult a = run(s), b = run(s);
+  EXPECT_EQ(a.png, b.png);
+  s.physics_seed = 5;
+  EXPECT_NE(run(s).png, a.png);
+}
+
+// paper §7, Fig. 9: flatter at friction 0.1, steeper at 0.9.
+TEST(DemSimulator, PileSteepensWithFriction) {
+  double last = 0;
+  for (double mu : {0.1, 0.9}) {
+    Scene s = small_dem_scene();
+    s.physics.friction = mu;
+    SimResult r = test::simulate_scene(s, *make_dem_simulator());
+    double angle = test::flank_angle_deg(test::column_heights(r.class_map));
+    std::printf("DEM friction %.1f: pile %.1f°\n", mu, angle);
+    EXPECT_GT(angle, last + 3);
+    last = angle;
+  }
+}
+
+TEST(DemSimulator, DivergenceIsReportedNotWritten) {
+  Scene s = small_dem_scene();
+  s.dem.max_overlap = 0.01;  // any real contact now counts as divergence
+  EXPECT_THROW(run(s), SimulationError);
+}
+
+}  // namespace
+}  // namespace sandpic
