@@ -17,6 +17,19 @@ btScalar mean_rolling(const btCollisionObject* a, const btCollisionObject* b) {
   return (a->getRollingFriction() + b->getRollingFriction()) / 2;
 }
 
+// Slots are reused last-freed first: deterministic, and the arrays stay small.
+template <class T>
+int store(std::vector<std::unique_ptr<T>>& items, std::vector<int>& free, std::unique_ptr<T> item) {
+  if (free.empty()) {
+    items.push_back(std::move(item));
+    return int(items.size()) - 1;
+  }
+  int slot = free.back();
+  free.pop_back();
+  items[size_t(slot)] = std::move(item);
+  return slot;
+}
+
 }  // namespace
 
 struct GrainWorld::Impl {
@@ -113,17 +126,8 @@ int GrainWorld::add_body(int cls, Vec2 p, Vec2 v) {
   m.world.addRigidBody(body.get());
   body->setGravity(btVector3(0, btScalar(-m.gravity[cls]), 0));
   body->setLinearVelocity(btVector3(btScalar(v.x()), btScalar(v.y()), 0));
-  int slot;
-  if (!m.free_bodies.empty()) {
-    slot = m.free_bodies.back();
-    m.free_bodies.pop_back();
-    m.bodies[size_t(slot)] = std::move(body);
-  } else {
-    slot = int(m.bodies.size());
-    m.bodies.push_back(std::move(body));
-  }
   ++live_bodies_;
-  return slot;
+  return store(m.bodies, m.free_bodies, std::move(body));
 }
 
 void GrainWorld::remove_body(int slot) {
@@ -159,16 +163,7 @@ int GrainWorld::add_static(int cls, Vec2 p) {
   m.set_surface(*o, m.radius[cls]);
   m.world.addCollisionObject(o.get(), btBroadphaseProxy::StaticFilter,
                              btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
-  int slot;
-  if (!m.free_statics.empty()) {
-    slot = m.free_statics.back();
-    m.free_statics.pop_back();
-    m.statics[size_t(slot)] = std::move(o);
-  } else {
-    slot = int(m.statics.size());
-    m.statics.push_back(std::move(o));
-  }
-  return slot;
+  return store(m.statics, m.free_statics, std::move(o));
 }
 
 void GrainWorld::remove_static(int slot) {
