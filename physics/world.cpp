@@ -94,13 +94,15 @@ GrainWorld::GrainWorld(int width, int height, const std::array<double, kClasses>
   m.ground_shape = std::make_unique<btHeightfieldTerrainShape>(width + 1, 2, m.ground.data(), btScalar(0),
                                                                 btScalar(height), 1, false);
   m.add_fixed(m.ground_shape.get(), btVector3(btScalar(width / 2.0), btScalar(height / 2.0), 0));
-  // The window's sides, as tall as twice the window, and a solid floor
-  // under the height field (a triangle surface alone lets a pressed sphere through).
+  // The window's sides, and a solid floor under the height field (a
+  // triangle surface alone lets a pressed sphere through).
   m.wall_shape = std::make_unique<btBoxShape>(btVector3(10, btScalar(height), 10));
   m.add_fixed(m.wall_shape.get(), btVector3(-10, btScalar(height), 0));
   m.add_fixed(m.wall_shape.get(), btVector3(btScalar(width + 10), btScalar(height), 0));
   m.floor_shape = std::make_unique<btBoxShape>(btVector3(btScalar(width), 10, 10));
   m.add_fixed(m.floor_shape.get(), btVector3(btScalar(width / 2.0), -10, 0));
+  // The frame is closed: a lid at the window's top edge.
+  m.add_fixed(m.floor_shape.get(), btVector3(btScalar(width / 2.0), btScalar(height + 10), 0));
 }
 
 GrainWorld::~GrainWorld() {
