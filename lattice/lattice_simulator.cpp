@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/errors.h"
 #include "src/release.h"
 
 namespace sandpic {
@@ -18,7 +19,9 @@ SlopeRule make_slope_rule(double degrees, double rise_px, double column_px, doub
   r.drop_per_column = std::tan(degrees * std::numbers::pi / 180) * column_px;
   // The window spreads a grain's own height step (rise) over enough columns
   // that it changes the slope by at most half the rule's slope.
-  r.window = std::clamp(int(std::ceil(2 * rise_px / std::max(r.drop_per_column, 1e-9))), 1, HeightField::kMaxWindow);
+  // Clamped as a double: at friction 0 the ratio is far beyond any int.
+  r.window = int(std::clamp(std::ceil(2 * rise_px / std::max(r.drop_per_column, 1e-9)), 1.0,
+                            double(HeightField::kMaxWindow)));
   r.runout = int(std::lround(runout_px / column_px));
   return r;
 }
@@ -32,6 +35,8 @@ SlopeRule slope_rule(const Scene& s, int k) {
 }
 
 namespace {
+
+double columns_per_px_of(const Scene& s, int columns) { return columns / double(s.window.width); }
 
 class LatticeSimulator final : public Simulator {
  public:
@@ -51,6 +56,13 @@ class LatticeSimulator final : public Simulator {
       if (at == rules.end()) rules.push_back(r);
       area[k] = grain_area_px(s, k);
     }
+    // A grain raises one column by its whole rise: a column holds whole
+    // grains only, so a grid too fine for the window loses sand.
+    double rise = *std::max_element(area.begin(), area.end()) * columns_per_px_of(s, columns);
+    if (double(columns) * std::floor(H / rise) < double(in.grains.size()))
+      throw key_error("lattice.resolution", "too fine for this window: a column holds " +
+                                                std::to_string(int(std::floor(H / rise))) +
+                                                " grains of the largest class; lower it");
     HeightField field(columns, double(W) / columns, H, rules);
 
     const ReleaseModel model = release_model(s);

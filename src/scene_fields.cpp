@@ -1,6 +1,8 @@
 // Every scene key: its path, type, range and help, next to the Scene field it
 // sets (defaults live in scene.h). Keys are listed in the order a scene file
 // is read by a person: geometry, grains, the pipeline's stages, then output.
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -10,6 +12,9 @@
 
 namespace sandpic {
 namespace {
+
+// A value as JSON text for an error message, whatever bytes it holds.
+std::string shown(const json& v) { return v.dump(-1, ' ', false, json::error_handler_t::replace); }
 
 std::string num(double d) {
   std::ostringstream o;
@@ -88,7 +93,7 @@ Field choice(std::string path, Acc acc, std::vector<std::pair<std::string, E>> n
                   acc(s) = e;
                   return;
                 }
-            throw key_error(path, "must be one of " + list + ", got " + v.dump());
+            throw key_error(path, "must be one of " + list + ", got " + shown(v));
           }};
 }
 
@@ -103,7 +108,7 @@ Field text(std::string path, Acc acc, std::string help) {
 
 const json& element(const json& v, const std::string& path, size_t n) {
   if (!v.is_array() || v.size() != n)
-    throw key_error(path, "expected an array of " + std::to_string(n) + " values, got " + v.dump());
+    throw key_error(path, "expected an array of " + std::to_string(n) + " values, got " + shown(v));
   return v;
 }
 
@@ -131,11 +136,13 @@ std::string hex(Rgb c) {
 Rgb as_rgb(const json& v, const std::string& path) {
   if (v.is_string()) {
     std::string t = v.get<std::string>();
-    unsigned r, g, b;
-    char extra;
-    if (t.size() == 7 && std::sscanf(t.c_str(), "#%2x%2x%2x%c", &r, &g, &b, &extra) == 3)
-      return Rgb{uint8_t(r), uint8_t(g), uint8_t(b)};
-    throw key_error(path, "a colour is \"#rrggbb\" or [r, g, b], got " + v.dump());
+    bool hex6 = t.size() == 7 && t[0] == '#' &&
+                std::all_of(t.begin() + 1, t.end(), [](unsigned char c) { return std::isxdigit(c) != 0; });
+    if (hex6) {
+      unsigned long v = std::stoul(t.substr(1), nullptr, 16);
+      return Rgb{uint8_t(v >> 16), uint8_t(v >> 8), uint8_t(v)};
+    }
+    throw key_error(path, "a colour is \"#rrggbb\" or [r, g, b], got " + shown(v));
   }
   element(v, path, 3);
   return Rgb{uint8_t(as_integer(v[0], path + "[0]", 0, 255)), uint8_t(as_integer(v[1], path + "[1]", 0, 255)),
@@ -347,7 +354,7 @@ std::vector<Field> make_fields() {
       {"dem.water", "the device's water: drag and buoyancy per class density", false,
        [](const Scene& s) { return ordered_json(s.dem.water); },
        [](Scene& s, const json& v) {
-         if (!v.is_boolean()) throw key_error("dem.water", std::string("expected true or false, got ") + v.dump());
+         if (!v.is_boolean()) throw key_error("dem.water", std::string("expected true or false, got ") + shown(v));
          s.dem.water = v.get<bool>();
        }},
       real("dem.water_density_g_cm3", [](S& s) -> double& { return s.dem.water_density_g_cm3; }, 0, 50,

@@ -112,7 +112,7 @@ Scene load_scene(const std::string& path) {
   }
   Scene s;
   size_t slash = path.rfind('/');
-  s.base_dir = slash == std::string::npos ? "." : path.substr(0, slash);
+  s.base_dir = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
   try {
     apply_json(s, doc);
   } catch (const InputError& e) {
@@ -138,8 +138,12 @@ void apply_setting(Scene& s, const std::string& assignment) {
 void apply_scale(Scene& s, double factor) {
   if (!(factor > 0) || !std::isfinite(factor) || factor > 8)
     throw InputError("--scale must be in (0, 8], got " + std::to_string(factor));
-  for (auto& f : scene_fields())
-    if (f.px) f.set(s, scaled(json::parse(f.get(s).dump()), factor, f.path));
+  try {
+    for (auto& f : scene_fields())
+      if (f.px) f.set(s, scaled(json::parse(f.get(s).dump()), factor, f.path));
+  } catch (const InputError& e) {
+    throw InputError("--scale " + std::to_string(factor) + " makes " + e.what());
+  }
   s.units.mm_per_pixel /= factor;
   for (auto& d : s.grains.diameter_mm) d /= factor;
 }
@@ -167,6 +171,10 @@ void validate(const Scene& s) {
        "must not exceed segment.semi_major_max");
   need(s.segment.eccentricity_min <= s.segment.eccentricity_max, "segment.eccentricity_min",
        "must not exceed segment.eccentricity_max");
+  need(s.segment.method != SegmentMethod::Ellipses ||
+           s.segment.semi_major_min * std::sqrt(1 - s.segment.eccentricity_max * s.segment.eccentricity_max) >= 0.5,
+       "segment.semi_major_min",
+       "with segment.eccentricity_max, the smallest ellipses would be under 0.5 px high (more units than grains)");
   double share = 0;
   for (double p : s.grains.proportions) share += p;
   need(share > 0, "grains.proportions", "at least one class needs a share above 0");

@@ -24,7 +24,7 @@ namespace {
 struct SceneOptions {
   std::string scene_path;
   std::string mode;
-  std::optional<uint64_t> seed, layout_seed, physics_seed;
+  std::optional<int64_t> seed, layout_seed, physics_seed;
   double scale = 1;
   std::vector<std::string> sets;
   int threads = 0;
@@ -32,9 +32,11 @@ struct SceneOptions {
   void add_to(CLI::App* cmd) {
     cmd->add_option("scene", scene_path, "scene file (JSON); none: the built-in default scene");
     cmd->add_option("--mode", mode, "lattice | dem (the scene's key 'mode')");
-    cmd->add_option("--seed", seed, "sets the layout and the physics seed");
-    cmd->add_option("--layout-seed", layout_seed, "tessellation, colours, ellipses, falling-order ties");
-    cmd->add_option("--physics-seed", physics_seed, "the simulation's own randomness");
+    // The range of the scene file's seeds, so a reported seed can go in one.
+    const auto seeds = CLI::Range(int64_t(0), int64_t(9007199254740991));
+    cmd->add_option("--seed", seed, "sets the layout and the physics seed")->check(seeds);
+    cmd->add_option("--layout-seed", layout_seed, "tessellation, colours, ellipses, falling-order ties")->check(seeds);
+    cmd->add_option("--physics-seed", physics_seed, "the simulation's own randomness")->check(seeds);
     cmd->add_option("--scale", scale, "multiplies every length in pixels (grains go by scale²)");
     cmd->add_option("--set", sets, "key.path=value, applied after the scene file")->take_all();
     cmd->add_option("--threads", threads, "worker threads (0: all cores); the picture does not depend on it");
@@ -44,9 +46,9 @@ struct SceneOptions {
     Scene s = scene_path.empty() ? Scene{} : load_scene(scene_path);
     for (const std::string& a : sets) apply_setting(s, a);
     if (!mode.empty()) apply_setting(s, "mode=" + mode);
-    if (seed) s.seed = *seed, s.layout_seed.reset(), s.physics_seed.reset();
-    if (layout_seed) s.layout_seed = *layout_seed;
-    if (physics_seed) s.physics_seed = *physics_seed;
+    if (seed) s.seed = uint64_t(*seed), s.layout_seed.reset(), s.physics_seed.reset();
+    if (layout_seed) s.layout_seed = uint64_t(*layout_seed);
+    if (physics_seed) s.physics_seed = uint64_t(*physics_seed);
     if (scale != 1) apply_scale(s, scale);
     validate(s);
     return s;
@@ -78,10 +80,10 @@ struct RenderCommand {
 
   void run() {
     Scene s = scene.build();
+    while (stages.size() > 1 && stages.back() == '/') stages.pop_back();
     check_writable(out);
     if (!stats.empty()) check_writable(stats);
-    if (!stages.empty())
-      check_writable(std::filesystem::is_directory(stages) ? stages + "/5-picture.png" : stages);
+    if (!stages.empty() && !std::filesystem::is_directory(stages)) check_writable(stages);
     auto threads = limit_threads(scene.threads);
     auto sim = make_simulator(s);
     RunOptions opt{!stages.empty(), Progress::stderr_is_terminal()};
@@ -91,15 +93,17 @@ struct RenderCommand {
     } catch (const SimulationError& e) {
       throw SimulationError(std::string(e.what()) + "; to reproduce: " + scene.reproduce(s));
     }
-    write_atomic(out, std::string_view(reinterpret_cast<const char*>(r.png.data()), r.png.size()));
-    if (!stats.empty()) write_atomic(stats, r.stats.dump(2) + "\n");
+    // Every target is checked before the first is written.
     if (!stages.empty()) {
       check_folder(stages);
-      for (auto& [name, img] : r.stages) {
-        std::vector<uchar> png;
-        cv::imencode(".png", img, png);
-        write_atomic(stages + "/" + name, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
-      }
+      for (auto& stage : r.stages) check_writable(stages + "/" + stage.first);
+    }
+    write_atomic(out, std::string_view(reinterpret_cast<const char*>(r.png.data()), r.png.size()));
+    if (!stats.empty()) write_atomic(stats, r.stats.dump(2) + "\n");
+    for (auto& [name, img] : r.stages) {
+      std::vector<uchar> png;
+      cv::imencode(".png", img, png);
+      write_atomic(stages + "/" + name, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
     }
   }
 };
@@ -186,6 +190,12 @@ int cli_main(int argc, char** argv) {
   } catch (const SimulationError& e) {
     std::fprintf(stderr, "sandpic: simulation failed: %s\n", e.what());
     return 3;
+  } catch (const nlohmann::json::exception& e) {  // a value no key check caught
+    std::fprintf(stderr, "sandpic: error: bad value: %s\n", e.what());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "sandpic: error: not enough memory for this scene; lower window or region sizes\n");
+    return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sandpic: simulation failed: %s\n", e.what());
     return 3;

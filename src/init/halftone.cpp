@@ -1,5 +1,9 @@
 // paper §4.2: initialization by halftoning an input picture.
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 
@@ -16,10 +20,17 @@ cv::Mat read_image(const std::string& path, const std::string& key) {
   if (!std::filesystem::is_regular_file(path, ec))
     throw key_error(key, "image '" + path + "' does not exist or is not a file");
   cv::Mat img;
+  // Codec libraries (libpng) print their own complaints on stderr; the one
+  // line below says it all, so stderr is closed while the file is decoded.
+  std::fflush(stderr);
+  int saved = dup(STDERR_FILENO), null = open("/dev/null", O_WRONLY);
+  if (null >= 0) dup2(null, STDERR_FILENO);
   try {
     img = cv::imread(path, cv::IMREAD_COLOR);  // 16-bit, grey and alpha become 8-bit BGR
   } catch (const cv::Exception&) {
   }
+  if (saved >= 0) dup2(saved, STDERR_FILENO), close(saved);
+  if (null >= 0) close(null);
   if (img.empty()) throw key_error(key, "cannot read image '" + path + "' (missing, unreadable or not an image)");
   return img;
 }

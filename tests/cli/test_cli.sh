@@ -62,6 +62,18 @@ expect 2 "missing image" -- "$BIN" render -o "$T/e.png" --set init.method=halfto
 one_line; err_has "/nope/pic.png"; absent "$T/e.png"
 expect 2 "no output folder" -- "$BIN" render -o "$T/no/such/dir/e.png"
 one_line; err_has "no/such/dir"
+expect 2 "negative seed" -- "$BIN" render -o "$T/e.png" --seed -1
+one_line; absent "$T/e.png"
+mkdir -p "$T/sd/3-segmentation.png"
+expect 2 "a stage target is a folder" -- "$BIN" render -o "$T/e.png" --scale 0.25 --stats "$T/e.json" --stages "$T/sd"
+one_line; err_has "3-segmentation.png"; absent "$T/e.png"; absent "$T/e.json"
+expect 0 "stages folder with a slash" -- "$BIN" render -o "$T/f.png" --scale 0.25 --stages "$T/newstages/"
+is_png "$T/newstages/5-picture.png"
+expect 2 "not UTF-8" -- "$BIN" render -o "$T/e.png" --set "mode=$(printf 'l\xffx')"
+one_line; err_has "mode"; absent "$T/e.png"
+head -c 100 "$T/a.png" >"$T/truncated.png"
+expect 2 "truncated image" -- "$BIN" render -o "$T/e.png" --set init.method=halftone --set "init.image=$T/truncated.png"
+one_line; err_has "truncated.png"; absent "$T/e.png"
 expect 2 "no -o" -- "$BIN" render
 expect 2 "bad scale" -- "$BIN" render -o "$T/e.png" --scale -1
 one_line; absent "$T/e.png"

@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "lattice/lattice_simulator.h"
+#include "src/errors.h"
 #include "src/pipeline.h"
 #include "tests/test_util.h"
 
@@ -38,6 +40,31 @@ TEST(LatticeSimulator, BigGrainsPileSteeper) {
   double small = pile_angle(s);
   std::printf("S1 only: %.1f°, S3 only: %.1f°\n", big, small);
   EXPECT_GT(big, small + 2);
+}
+
+// At friction 0 the look-ahead is as wide as allowed (the ratio once
+// overflowed an int and fell to one column: 45° piles).
+TEST(LatticeSimulator, FrictionZeroLooksAsFarAsAllowed) {
+  EXPECT_EQ(make_slope_rule(0, 1.18, 1.0).window, HeightField::kMaxWindow);
+  Scene s = test::one_ellipse_scene();
+  s.physics.friction = 0;
+  std::vector<double> h = test::column_heights(test::simulate_scene(s, *make_lattice_simulator()).class_map);
+  auto [lo, hi] = std::minmax_element(h.begin(), h.end());
+  EXPECT_LT(*hi - *lo, 4);  // the sand lies flat from wall to wall
+  EXPECT_GT(*lo, 40);
+}
+
+TEST(LatticeSimulator, AGridTooFineForTheWindowIsABadScene) {
+  Scene s;
+  s.window.width = s.window.height = 8;
+  s.region.height = 1;
+  s.lattice.resolution = 8;  // one big grain raises a column 9.4 px: more than the window
+  try {
+    run_pipeline(s, *make_lattice_simulator(), RunOptions{});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lattice.resolution"), std::string::npos);
+  }
 }
 
 TEST(LatticeSimulator, EveryGrainSettlesInThePicture) {

@@ -72,12 +72,18 @@ TEST(SceneFile, BadValuesNameTheirKey) {
   EXPECT_NE(error_of([&] { apply_setting(s, "grains.colors=[1,2,3]"); }).find("grains.colors"), std::string::npos);
   EXPECT_NE(error_of([&] { apply_setting(s, "physics.friction=1e999"); }).find("physics.friction"),
             std::string::npos);
+  EXPECT_NE(error_of([&] { apply_setting(s, "mode=l\xffx"); }).find("'mode'"), std::string::npos);  // not UTF-8
   std::string e = error_of([&] { apply_json(s, json::parse(R"({"segment": {"ellipses": [{"cx": 1, "cy": 2}]}})")); });
   EXPECT_NE(e.find("segment.ellipses[0].a"), std::string::npos) << e;
 }
 
 TEST(SceneFile, ColoursAreHexOrTriples) {
   Scene s;
+  for (const char* bad : {"#-1-1-1", "# 1 2 3", "#12345", "#1234567", "red"})
+    EXPECT_NE(error_of([&] { apply_setting(s, std::string("render.background_color=\"") + bad + "\""); })
+                  .find("render.background_color"),
+              std::string::npos)
+        << bad;
   apply_setting(s, R"(grains.colors=["#ff0000", [0, 255, 0], "#0000ff", [1, 2, 3]])");
   EXPECT_EQ(s.grains.colors[0], (Rgb{255, 0, 0}));
   EXPECT_EQ(s.grains.colors[1], (Rgb{0, 255, 0}));
@@ -94,6 +100,12 @@ TEST(SceneFile, CrossKeyChecks) {
   s = Scene{};
   s.region.height = 700;  // the region's sand would not fit in the window
   EXPECT_NE(error_of([&] { validate(s); }).find("would not fit"), std::string::npos);
+  s = Scene{};
+  s.segment.semi_major_min = s.segment.semi_major_max = 1;  // ellipses thinner than a pixel
+  s.segment.eccentricity_min = s.segment.eccentricity_max = 0.999;
+  EXPECT_NE(error_of([&] { validate(s); }).find("segment.semi_major_min"), std::string::npos);
+  s = Scene{};
+  EXPECT_NE(error_of([&] { apply_scale(s, 0.05); }).find("--scale"), std::string::npos);
   EXPECT_EQ(error_of([&] { validate(Scene{}); }), "");
 }
 
