@@ -60,18 +60,22 @@ struct GrainWorld::Impl {
     o.setRollingFriction(btScalar(material.rolling_resistance * r));
   }
 
-  void add_fixed(btCollisionShape* shape, btVector3 at) {
+  // A collider that never moves, in the world's static tree (static pairs
+  // are never tested against each other).
+  std::unique_ptr<btCollisionObject> static_object(btCollisionShape* shape, btVector3 at, double r) {
     auto o = std::make_unique<btCollisionObject>();
     o->setCollisionShape(shape);
     btTransform t;
     t.setIdentity();
     t.setOrigin(at);
     o->setWorldTransform(t);
-    set_surface(*o, radius[0]);
+    set_surface(*o, r);
     world.addCollisionObject(o.get(), btBroadphaseProxy::StaticFilter,
                              btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
-    fixed_objects.push_back(std::move(o));
+    return o;
   }
+
+  void add_fixed(btCollisionShape* shape, btVector3 at) { fixed_objects.push_back(static_object(shape, at, radius[0])); }
 };
 
 GrainWorld::GrainWorld(int width, int height, const std::array<double, kClasses>& radius_px,
@@ -156,15 +160,7 @@ void GrainWorld::set_velocity(int slot, Vec2 v) {
 
 int GrainWorld::add_static(int cls, Vec2 p) {
   Impl& m = *impl_;
-  auto o = std::make_unique<btCollisionObject>();
-  o->setCollisionShape(m.spheres[cls].get());
-  btTransform t;
-  t.setIdentity();
-  t.setOrigin(btVector3(btScalar(p.x()), btScalar(p.y()), 0));
-  o->setWorldTransform(t);
-  m.set_surface(*o, m.radius[cls]);
-  m.world.addCollisionObject(o.get(), btBroadphaseProxy::StaticFilter,
-                             btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+  auto o = m.static_object(m.spheres[cls].get(), btVector3(btScalar(p.x()), btScalar(p.y()), 0), m.radius[cls]);
   return store(m.statics, m.free_statics, std::move(o));
 }
 
