@@ -40,6 +40,12 @@ if cmp -s "$T/a.png" "$T/b.png"; then ok; else bad "same seed gave other bytes";
 expect 0 "other seed" -- "$BIN" render -o "$T/c.png" --scale 0.25 --seed 7
 if ! cmp -s "$T/a.png" "$T/c.png"; then ok; else bad "another seed gave the same picture"; fi
 
+# The benchmark prints a median per stage.
+expect 0 "bench" -- "$BIN" bench --runs 2 --scale 0.2
+for k in init_s segment_s simulate_s render_s total_s "grains per second"; do
+  if grep -q "$k" "$T/out"; then ok; else bad "bench output lacks $k"; fi
+done
+
 # The printed default scene is a complete scene file.
 expect 0 "scene" -- "$BIN" scene
 cp "$T/out" "$T/default.json"
