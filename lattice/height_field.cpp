@@ -96,18 +96,30 @@ int HeightField::room_near(int c, double rise) const {
 
 // Column c rose. It may have become steep on either side; the columns within
 // the window that look at it can only have become less steep, so only those
-// marked steep need a second look.
+// marked steep need a second look, found by scanning the bit words.
 void HeightField::refresh(Slopes& s, int c) {
   const int k = s.rule.window;
   for (int side = 0; side < 2; ++side) {
     const int dir = side == 0 ? 1 : -1;
     std::vector<uint64_t>& bits = s.steep[side];
-    for (int j = c, end = c - dir * (k + 1); j != end; j -= dir) {
-      if (j < 0 || j >= columns_) break;
+    auto set = [&](int j, bool steep) {
       uint64_t bit = 1ull << (j & 63);
       uint64_t& word = bits[size_t(j) >> 6];
-      if (j != c && !(word & bit)) continue;
-      word = unstable(j, dir, s.rule) ? word | bit : word & ~bit;
+      word = steep ? word | bit : word & ~bit;
+    };
+    set(c, unstable(c, dir, s.rule));
+    // The neighbours that look at c: c-k..c-1 toward +x, c+1..c+k toward -x.
+    const int lo = std::max(0, side == 0 ? c - k : c + 1), hi = std::min(columns_ - 1, side == 0 ? c - 1 : c + k);
+    for (int w = lo >> 6; w <= (hi >> 6) && lo <= hi; ++w) {
+      uint64_t word = bits[size_t(w)];
+      if (w == lo >> 6) word &= ~0ull << (lo & 63);
+      if (w == hi >> 6) word &= ~0ull >> (63 - (hi & 63));
+      for (; word; word &= word - 1) {
+        const int j = w * 64 + std::countr_zero(word);
+        // A steep neighbour usually stays steep by its next column alone.
+        if (j + dir != c && height(j) - height(j + dir) > s.rule.drop_per_column) continue;
+        set(j, unstable(j, dir, s.rule));
+      }
     }
   }
 }
