@@ -33,6 +33,19 @@ struct Arrival {
   bool operator>(const Arrival& o) const { return time != o.time ? time > o.time : order > o.order; }
 };
 
+std::array<double, kClasses> radii(const Scene& s) {
+  std::array<double, kClasses> r;
+  for (int k = 0; k < kClasses; ++k) r[k] = grain_diameter_px(s, k) / 2;
+  return r;
+}
+
+// In g·px³/cm³: only ratios between classes matter to the solver.
+std::array<double, kClasses> masses(const Scene& s) {
+  std::array<double, kClasses> m;
+  for (int k = 0; k < kClasses; ++k) m[k] = s.grains.density_g_cm3[k] * std::pow(grain_diameter_px(s, k), 3);
+  return m;
+}
+
 class DemRun {
  public:
   DemRun(const SimInput& in, Progress& progress);
@@ -64,7 +77,7 @@ class DemRun {
   ReleaseModel model_;
   std::vector<Outlet> outlets_;
   std::vector<int32_t> unit_of_order_;
-  std::array<double, kClasses> radius_{}, mass_{}, decay_{};
+  std::array<double, kClasses> radius_, mass_, decay_{};
   double dt_, small_d_;
   LayerRule rule_;
   LayerHeights heights_;
@@ -105,26 +118,14 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
       water_(water_model(in.scene)),
       model_(release_model(in.scene)),
       dt_(dem_time_step(in.scene)),
+      radius_(radii(in.scene)),
+      mass_(masses(in.scene)),
       heights_(in.scene.window.width),
-      world_(W_, H_,
-             [&] {
-               std::array<double, kClasses> r;
-               for (int k = 0; k < kClasses; ++k) r[k] = grain_diameter_px(in.scene, k) / 2;
-               return r;
-             }(),
-             [&] {
-               std::array<double, kClasses> m;  // in g per px³ units: only ratios matter
-               for (int k = 0; k < kClasses; ++k)
-                 m[k] = in.scene.grains.density_g_cm3[k] * std::pow(grain_diameter_px(in.scene, k), 3);
-               return m;
-             }(),
-             std::array<double, kClasses>{},  // gravity is the water stage's
+      world_(W_, H_, radius_, mass_,
              GrainMaterial{in.scene.physics.friction, in.scene.physics.restitution, in.scene.dem.rolling_resistance,
                            in.scene.dem.solver_iterations}) {
   small_d_ = 1e9;
   for (int k = 0; k < kClasses; ++k) {
-    radius_[k] = grain_diameter_px(s_, k) / 2;
-    mass_[k] = s_.grains.density_g_cm3[k] * std::pow(2 * radius_[k], 3);
     decay_[k] = std::exp(-water_.drag_per_s[k] * dt_);
     small_d_ = std::min(small_d_, 2 * radius_[k]);
   }

@@ -41,7 +41,7 @@ struct GrainWorld::Impl {
 
   std::array<std::unique_ptr<btSphereShape>, kClasses> spheres;
   std::array<btVector3, kClasses> inertia;
-  std::array<double, kClasses> mass{}, gravity{}, radius{};
+  std::array<double, kClasses> mass{}, radius{};
   GrainMaterial material;
   std::vector<std::unique_ptr<btRigidBody>> bodies;
   std::vector<int> free_bodies;
@@ -79,14 +79,13 @@ struct GrainWorld::Impl {
 };
 
 GrainWorld::GrainWorld(int width, int height, const std::array<double, kClasses>& radius_px,
-                       const std::array<double, kClasses>& mass, const std::array<double, kClasses>& gravity_px_s2,
-                       const GrainMaterial& material)
+                       const std::array<double, kClasses>& mass, const GrainMaterial& material)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   gCalculateCombinedRollingFrictionCallback = &mean_rolling;
-  m.width = width, m.height = height, m.material = material, m.mass = mass, m.gravity = gravity_px_s2;
+  m.width = width, m.height = height, m.material = material, m.mass = mass;
   m.radius = radius_px;
-  m.world.setGravity(btVector3(0, 0, 0));  // per body: buoyancy differs by class
+  m.world.setGravity(btVector3(0, 0, 0));
   m.world.getSolverInfo().m_numIterations = material.solver_iterations;
   for (int k = 0; k < kClasses; ++k) {
     m.spheres[k] = std::make_unique<btSphereShape>(btScalar(radius_px[k]));
@@ -128,9 +127,7 @@ int GrainWorld::add_body(int cls, Vec2 p, Vec2 v) {
   body->setLinearFactor(btVector3(1, 1, 0));   // in the picture's plane
   body->setAngularFactor(btVector3(0, 0, 1));  // rolling in the plane only
   body->setActivationState(DISABLE_DEACTIVATION);  // the layer model decides rest, not Bullet
-  body->setFlags(body->getFlags() | BT_DISABLE_WORLD_GRAVITY);
   m.world.addRigidBody(body.get());
-  body->setGravity(btVector3(0, btScalar(-m.gravity[cls]), 0));
   body->setLinearVelocity(btVector3(btScalar(v.x()), btScalar(v.y()), 0));
   ++live_bodies_;
   return store(m.bodies, m.free_bodies, std::move(body));

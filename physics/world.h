@@ -20,9 +20,9 @@ struct GrainMaterial {
 
 class GrainWorld {
  public:
+  // No gravity in the world: the DEM's water stage applies it with drag.
   GrainWorld(int width, int height, const std::array<double, kClasses>& radius_px,
-             const std::array<double, kClasses>& mass, const std::array<double, kClasses>& gravity_px_s2,
-             const GrainMaterial& material);
+             const std::array<double, kClasses>& mass, const GrainMaterial& material);
   ~GrainWorld();
   GrainWorld(const GrainWorld&) = delete;
   GrainWorld& operator=(const GrainWorld&) = delete;
