@@ -129,7 +129,6 @@ int GrainWorld::add_body(int cls, Vec2 p, Vec2 v) {
   body->setActivationState(DISABLE_DEACTIVATION);  // the layer model decides rest, not Bullet
   m.world.addRigidBody(body.get());
   body->setLinearVelocity(btVector3(btScalar(v.x()), btScalar(v.y()), 0));
-  ++live_bodies_;
   return store(m.bodies, m.free_bodies, std::move(body));
 }
 
@@ -138,7 +137,6 @@ void GrainWorld::remove_body(int slot) {
   m.world.removeRigidBody(m.bodies[size_t(slot)].get());
   m.bodies[size_t(slot)].reset();
   m.free_bodies.push_back(slot);
-  --live_bodies_;
 }
 
 Vec2 GrainWorld::position(int slot) const {
@@ -180,11 +178,6 @@ void GrainWorld::raise_ground(Vec2 p, double r) {
       g = std::max(g, top);
     }
   }
-}
-
-double GrainWorld::ground(double x) const {
-  int j = std::clamp(int(std::lround(x)), 0, impl_->width);
-  return impl_->ground[size_t(j)];
 }
 
 void GrainWorld::step(double dt) { impl_->world.stepSimulation(btScalar(dt), 0, btScalar(dt)); }

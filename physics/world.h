@@ -39,16 +39,13 @@ class GrainWorld {
   // Raises the height field under a grain of radius r centred at p to the
   // grain's upper outline (r = 0: to p itself, at the nearest column).
   void raise_ground(Vec2 p, double r);
-  double ground(double x) const;
 
   void step(double dt);
   double deepest_overlap() const;  // px, over all contacts
-  int bodies() const { return live_bodies_; }
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
-  int live_bodies_ = 0;
 };
 
 }  // namespace sandpic
