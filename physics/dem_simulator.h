@@ -1,6 +1,7 @@
 #pragma once
 // The DEM backend: every grain a Bullet rigid body once it nears the pile,
 // made affordable by the paper's three-layer model (§7-8).
+#include <array>
 #include <memory>
 
 #include "src/simulator.h"
@@ -12,5 +13,10 @@ std::unique_ptr<Simulator> make_dem_simulator();
 // The time step of a scene: the fastest grain (its settling speed in water)
 // moves dem.step_diameters small-grain diameters per step.
 double dem_time_step(const Scene& s);
+
+// Bullet's radius (px) and mass of each class. Masses are scaled so that a
+// grain's weight per step stays far below 1 (see dem_masses in the .cpp).
+std::array<double, kClasses> dem_radii(const Scene& s);
+std::array<double, kClasses> dem_masses(const Scene& s);
 
 }  // namespace sandpic

@@ -10,17 +10,22 @@ int LayerHeights::column(double x) const { return std::clamp(int(std::floor(x + 
 double static_slope_rad(const LayerHeights& h, double x, double y) {
   const int j = h.column(x), n = h.columns();
   const int r = std::min(j + 1, n - 1), l = std::max(j - 1, 0);
-  double t1 = r != j ? std::atan((h.hs[size_t(r)] - y) / (r - x)) : 0;
-  double t2 = l != j ? std::atan((y - h.hs[size_t(l)]) / (x - l)) : 0;
-  return 0.5 * (t1 + t2);
+  // The paper's θ1, θ2 read as drops: how far the grain would fall to reach
+  // the static surface one column to either side.
+  double drop_r = r != j ? std::atan((y - h.hs[size_t(r)]) / (r - x)) : -INFINITY;
+  double drop_l = l != j ? std::atan((y - h.hs[size_t(l)]) / (x - l)) : -INFINITY;
+  double steepest = std::max(drop_r, drop_l);
+  return std::isfinite(steepest) ? steepest : 0;
 }
 
 bool becomes_static(LayerHeights& h, const LayerRule& r, double x, double y, double moved, int rested) {
   if (moved >= r.rest_px) return false;
-  // The paper's |θ| < α keeps grains on a too-steep static slope moving; a
-  // grain that has rested several cycles in a row is held by its neighbours
-  // whatever the slope, and would otherwise stay in the active set for ever.
-  if (rested < r.rest_cycles_any_slope && std::abs(static_slope_rad(h, x, y)) >= r.slope_limit_rad) return false;
+  // paper §8.1: θ < α keeps grains on a too-steep static slope moving, so
+  // the static layer never grows steeper than α. Optionally (a speed-up, at
+  // a cost in accuracy), a grain that rested several cycles in a row becomes
+  // static whatever the slope.
+  const bool patient = r.rest_cycles_any_slope > 0 && rested >= r.rest_cycles_any_slope;
+  if (!patient && static_slope_rad(h, x, y) >= r.slope_limit_rad) return false;
   double& hs = h.hs[size_t(h.column(x))];
   hs = std::max(hs, y);
   return true;

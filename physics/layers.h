@@ -17,13 +17,16 @@ struct LayerHeights {
   int column(double x) const;  // paper: j = floor(x + 0.5), clamped to the window
 };
 
-// paper §8.1: θ(x, y) = (θ1 + θ2)/2 from the static heights of the two
-// neighbouring columns; signed, so the caller compares |θ| with α.
+// paper §8.1's θ(x, y) from the static heights of the two neighbouring
+// columns, taken as the steepest drop to either side rather than the paper's
+// signed mean (θ1 + θ2)/2: on a peak's apex the mean is 0, so grains landing
+// there became static at once and a narrow stream built a spike (50° flanks
+// where every grain a body gave 25°; with the steepest drop, 31°).
 double static_slope_rad(const LayerHeights& h, double x, double y);
 
 struct LayerRule {
   double rest_px = 0;           // at rest: moved less than this in a cycle
-  int rest_cycles_any_slope = 3;
+  int rest_cycles_any_slope = 0;  // 0: never static on a slope steeper than α
   double slope_limit_rad = 0;   // α
   double band_px = 0;           // static layer thickness
 };

@@ -87,6 +87,9 @@ GrainWorld::GrainWorld(int width, int height, const std::array<double, kClasses>
   m.radius = radius_px;
   m.world.setGravity(btVector3(0, 0, 0));
   m.world.getSolverInfo().m_numIterations = material.solver_iterations;
+  // Bullet's default 0.2 units/s would make every resting contact bounce:
+  // gravity closes it by g·dt (~11 px/s) each step. Only impacts bounce.
+  m.world.getSolverInfo().m_restitutionVelocityThreshold = btScalar(material.bounce_speed);
   for (int k = 0; k < kClasses; ++k) {
     m.spheres[k] = std::make_unique<btSphereShape>(btScalar(radius_px[k]));
     m.spheres[k]->calculateLocalInertia(btScalar(mass[k]), m.inertia[k]);

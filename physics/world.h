@@ -16,6 +16,7 @@ namespace sandpic {
 struct GrainMaterial {
   double friction = 0.4, restitution = 0.1, rolling_resistance = 0.3;
   int solver_iterations = 10;
+  double bounce_speed = 0;  // px/s: contacts closing slower than this do not bounce
 };
 
 class GrainWorld {

@@ -62,6 +62,7 @@ RunResult run_pipeline(const Scene& s, Simulator& sim, const RunOptions& opt) {
 
   RunResult out;
   out.picture = render(s, sim_result.class_map, background);
+  out.class_map = sim_result.class_map;
   timing["render_s"] = clock.lap();
   if (!cv::imencode(".png", out.picture, out.png)) throw SimulationError("PNG encoding failed");
   timing["encode_s"] = clock.lap();

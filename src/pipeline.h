@@ -15,6 +15,7 @@ struct RunOptions {
 
 struct RunResult {
   cv::Mat picture;          // 8-bit BGR, window size
+  cv::Mat class_map;        // the backend's: CV_8U, class 0..3 or kNoSand
   std::vector<uchar> png;   // the picture, encoded
   ordered_json stats;
   Stages stages;

@@ -26,7 +26,7 @@ inline uint64_t mix64(uint64_t z) {  // splitmix64 finaliser
 
 inline uint64_t key(uint64_t seed, Stream s, uint64_t id, uint64_t k = 0) {
   return mix64(mix64(mix64(seed) ^ (static_cast<uint64_t>(s) * 0x632be59bd9b4e019ull)) ^
-               mix64(id) + k * 0xd6e8feb86659fd93ull);
+               (mix64(id) + k * 0xd6e8feb86659fd93ull));
 }
 
 // Uniform in [0, 1) with 53 random bits.

@@ -100,7 +100,7 @@ struct Scene {
   } lattice;
   struct Dem {
     Layers layers = Layers::Three;
-    double step_diameters = 0.1;  // most a grain moves in one step, in small-grain diameters
+    double step_diameters = 0.05;  // most a grain moves in one step, in small-grain diameters
     int solver_iterations = 10;
     double release_rate = 4000;    // grains released per simulated second
     double rolling_resistance = 0.6;  // rolling friction, as a fraction of the grain radius (tan 31°)
@@ -109,8 +109,8 @@ struct Scene {
     double water_viscosity_pa_s = 1.0e-3;
     int cycle_steps = 40;              // paper §8.1: layers updated every 40 steps
     double rest_displacement = 0.05;   // at rest: moved less than this (diameters) in a cycle
-    int rest_cycles_any_slope = 3;     // at rest this many cycles: static on any slope
-    double slope_limit_deg = 38;       // paper §8.1's α, for |θ|
+    int rest_cycles_any_slope = 0;     // at rest this many cycles: static on any slope (0: never)
+    double slope_limit_deg = 35;       // paper §8.1's α, for the steepest drop θ
     double static_thickness_mm = 2;    // paper §8.1
     double insert_gap_diameters = 4;   // flight is analytic until this far above the pile
     double max_overlap = 1.0;          // divergence: overlap beyond this (small-grain diameters)

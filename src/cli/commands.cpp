@@ -16,6 +16,7 @@
 #include "src/errors.h"
 #include "src/output.h"
 #include "src/pipeline.h"
+#include "validate/layer_bench.h"
 
 namespace sandpic {
 namespace {
@@ -164,6 +165,88 @@ struct BenchCommand {
   }
 };
 
+// Parses "a,b,c" with `one` for each item; errors name the option.
+template <class T, class F>
+std::vector<T> list_option(const std::string& option, const std::string& text, F one) {
+  std::vector<T> out;
+  size_t from = 0;
+  while (from <= text.size()) {
+    size_t comma = text.find(',', from);
+    std::string item = text.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
+    try {
+      out.push_back(one(item));
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception&) {
+      throw InputError(option + ": bad item '" + item + "' in '" + text + "'");
+    }
+    if (comma == std::string::npos) break;
+    from = comma + 1;
+  }
+  return out;
+}
+
+int64_t positive(const std::string& option, const std::string& item, int64_t max) {
+  size_t used = 0;
+  long long v = std::stoll(item, &used);
+  if (used != item.size() || v < 1 || v > max)
+    throw InputError(option + ": '" + item + "' is not a whole number in 1.." + std::to_string(max));
+  return v;
+}
+
+// paper Fig. 12: the DEM's layer models side by side at several grain counts.
+struct BenchLayersCommand {
+  SceneOptions scene;
+  std::string grains = "2000,5000,10000,20000,50000,100000", seeds = "1,2", layers = "three,bcre,all-dynamic";
+  int64_t all_dynamic_max = 5000, bcre_max = 100000000;
+  std::string csv, plot;
+  void add_to(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand(
+        "bench-layers", "paper Fig. 12: DEM time against grains for three, bcre and all-dynamic, and their silhouette error");
+    scene.add_to(cmd);
+    cmd->add_option("--grains", grains, "grain counts, comma-separated (the scene is scaled to each)")->capture_default_str();
+    cmd->add_option("--seeds", seeds, "physics seeds, comma-separated")->capture_default_str();
+    cmd->add_option("--layers", layers, "layer models, comma-separated")->capture_default_str();
+    cmd->add_option("--all-dynamic-max", all_dynamic_max, "largest count run with all-dynamic (its cost grows as n^2)")
+        ->capture_default_str();
+    cmd->add_option("--bcre-max", bcre_max, "largest count run with bcre");
+    cmd->add_option("--csv", csv, "write every run as CSV");
+    cmd->add_option("--plot", plot, "write time against grains as a PNG plot");
+    cmd->callback([this] { run(); });
+  }
+  void run() {
+    Scene s = scene.build();
+    LayerBenchOptions opt;
+    opt.grains = list_option<int64_t>("--grains", grains, [](const std::string& i) { return positive("--grains", i, 100000000); });
+    opt.seeds = list_option<uint64_t>("--seeds", seeds, [](const std::string& i) { return uint64_t(positive("--seeds", i, 9007199254740991)); });
+    opt.layers = list_option<Layers>("--layers", layers, [](const std::string& i) {
+      for (Layers l : {Layers::Three, Layers::Bcre, Layers::AllDynamic})
+        if (layers_name(l) == i) return l;
+      throw InputError("--layers: unknown model '" + i + "' (three, bcre or all-dynamic)");
+    });
+    opt.all_dynamic_max = all_dynamic_max;
+    opt.bcre_max = bcre_max;
+    if (!csv.empty()) check_writable(csv);
+    if (!plot.empty()) check_writable(plot);
+    s.mode = Mode::Dem;
+    auto threads = limit_threads(scene.threads);
+    auto sim = make_simulator(s);  // exit 2 in a build without Bullet
+    std::fprintf(stderr, "sandpic bench-layers: %s\n", scene.reproduce(s).c_str());
+    auto rows = run_layer_bench(s, opt, *sim, [](const LayerBenchRow& r) {
+      std::fprintf(stderr, "  %-18s %8lld grains  seed %-8llu %9.2f s  %8lld steps  silhouette error %.4f\n",
+                   r.layers.c_str(), (long long)r.grains, (unsigned long long)r.seed, r.simulate_s, (long long)r.steps,
+                   r.silhouette_error);
+    });
+    std::fputs(layer_bench_table(rows).c_str(), stdout);
+    if (!csv.empty()) write_atomic(csv, layer_bench_csv(rows));
+    if (!plot.empty()) {
+      std::vector<uchar> png;
+      cv::imencode(".png", layer_bench_plot(rows), png);
+      write_atomic(plot, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+    }
+  }
+};
+
 }  // namespace
 
 int cli_main(int argc, char** argv) {
@@ -174,9 +257,11 @@ int cli_main(int argc, char** argv) {
   RenderCommand render;
   SceneCommand scene;
   BenchCommand bench;
+  BenchLayersCommand bench_layers;
   render.add_to(app);
   scene.add_to(app);
   bench.add_to(app);
+  bench_layers.add_to(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

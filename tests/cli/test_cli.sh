@@ -93,9 +93,21 @@ if [ "$BULLET" = with-bullet ]; then
   expect 3 "dem divergence" -- "$BIN" render -o "$T/keep.png" --mode dem "${TINY[@]}" --set dem.max_overlap=0.01
   one_line; err_has "overlap"; err_has "physics seed"
   if [ "$(cat "$T/keep.png")" = keep ]; then ok; else bad "a diverged run overwrote the output"; fi
+  # paper Fig. 12: the layer models side by side, as a table, CSV and plot.
+  expect 0 "bench-layers" -- "$BIN" bench-layers "${TINY[@]}" --grains 100,200 --seeds 1,2 --all-dynamic-max 100 \
+    --csv "$T/fig12.csv" --plot "$T/fig12.png"
+  is_png "$T/fig12.png"
+  if [ "$(wc -l <"$T/fig12.csv")" = 12 ]; then ok; else bad "fig12.csv: $(cat "$T/fig12.csv")"; fi
+  if grep -q "all-dyn/three" "$T/out" && [ "$(wc -l <"$T/out")" = 3 ]; then ok; else bad "bench-layers table: $(cat "$T/out")"; fi
+  expect 2 "bench-layers bad count" -- "$BIN" bench-layers --grains 100,x --csv "$T/g.csv"
+  one_line; err_has "--grains"; absent "$T/g.csv"
+  expect 2 "bench-layers bad model" -- "$BIN" bench-layers --layers three,four
+  one_line; err_has "four"
 else
   expect 2 "dem without Bullet" -- "$BIN" render -o "$T/e.png" --mode dem
   one_line; err_has "Bullet"; absent "$T/e.png"
+  expect 2 "bench-layers without Bullet" -- "$BIN" bench-layers --grains 100 --csv "$T/g.csv"
+  one_line; err_has "Bullet"; absent "$T/g.csv"
 fi
 
 # Every example renders (scaled down).

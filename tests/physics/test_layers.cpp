@@ -17,13 +17,19 @@ LayerRule rule() {
   return r;
 }
 
-TEST(Layers, SlopeOfTheStaticLayer) {
+TEST(Layers, SlopeIsTheSteepestDropToTheStaticLayer) {
   LayerHeights h(20);
-  EXPECT_NEAR(static_slope_rad(h, 10, 0), 0, 1e-12);  // flat floor
+  EXPECT_NEAR(static_slope_rad(h, 10, 0), 0, 1e-12);  // on the flat floor
   for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 0.5 * j;  // a ramp of slope 0.5
   EXPECT_NEAR(static_slope_rad(h, 10, 5), std::atan(0.5), 1e-12);
-  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 10 - 0.5 * j;  // the other way: signed
-  EXPECT_NEAR(static_slope_rad(h, 10, 5), -std::atan(0.5), 1e-12);
+  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 10 - 0.5 * j;  // the other way: the same drop
+  EXPECT_NEAR(static_slope_rad(h, 10, 5), std::atan(0.5), 1e-12);
+  // An apex: the paper's mean (θ1 + θ2)/2 would be 0 here.
+  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 10 - std::abs(j - 10);
+  EXPECT_NEAR(static_slope_rad(h, 10, 11), std::atan(2.0), 1e-12);
+  // In a hollow there is no drop.
+  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = std::abs(j - 10);
+  EXPECT_LT(static_slope_rad(h, 10, 0.5), 0);
 }
 
 TEST(Layers, StaticNeedsRestAndAGentleSlopeOrLongRest) {
@@ -35,6 +41,8 @@ TEST(Layers, StaticNeedsRestAndAGentleSlopeOrLongRest) {
   for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 2.0 * j;  // 63°: steeper than α
   EXPECT_FALSE(becomes_static(h, r, 10, 20, 0.01, 1));
   EXPECT_TRUE(becomes_static(h, r, 10, 20, 0.01, 3));  // held there for three cycles
+  r.rest_cycles_any_slope = 0;  // the default: never static on a slope steeper than α
+  EXPECT_FALSE(becomes_static(h, r, 10, 20, 0.01, 1000));
 }
 
 TEST(Layers, FixedOnlyUnderTheStaticBand) {

@@ -1,0 +1,19 @@
+#pragma once
+// The pile's outline: the height of sand in every pixel column, and the
+// silhouette error between two pictures of one scene (issue 3: the cost in
+// accuracy of each DEM speed-up, measured against every grain a body).
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+namespace sandpic {
+
+// Sand height (px above the floor) of every column of a class map (CV_8U,
+// kNoSand where no grain lies).
+std::vector<double> silhouette(const cv::Mat& class_map);
+
+// Mean |h_a − h_b| over the columns, as a fraction of the window's height.
+// Both maps must have the same size.
+double silhouette_error(const cv::Mat& a, const cv::Mat& b);
+
+}  // namespace sandpic
