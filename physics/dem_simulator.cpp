@@ -145,7 +145,7 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
       heights_(in.scene.window.width),
       world_(W_, H_, radius_, mass_,
              GrainMaterial{in.scene.physics.friction, in.scene.physics.restitution, in.scene.dem.rolling_resistance,
-                           in.scene.dem.solver_iterations, bounce_speed(water_, dem_time_step(in.scene))}) {
+                           in.scene.dem.solver_iterations, bounce_speed(water_, dt_)}) {
   small_d_ = 1e9;
   for (int k = 0; k < kClasses; ++k) {
     decay_[k] = std::exp(-water_.drag_per_s[k] * dt_);
@@ -324,11 +324,10 @@ void DemRun::classify_stage() {
     // froze the slope (silhouette error 0.064 against all-dynamic at 3,000
     // grains, where the static band gives 0.010).
     const bool buried = p.y() < heights_.hs[size_t(heights_.column(p.x()))] - rule_.band_px;
-    if (layers_ != Layers::AllDynamic) {
-      if (buried || becomes_static(heights_, rule_, p.x(), p.y(), moved, rested_[size_t(id)])) {
-        make_static(id, p);
-        continue;
-      }
+    if (layers_ != Layers::AllDynamic &&
+        (buried || becomes_static(heights_, rule_, p.x(), p.y(), moved, rested_[size_t(id)]))) {
+      make_static(id, p);
+      continue;
     }
     if (world_.velocity(slot_[size_t(id)]).norm() < 0.3 * water_.terminal_px_s[k]) {
       int j = std::clamp(int(std::lround(p.x())), 0, W_);

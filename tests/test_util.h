@@ -9,6 +9,7 @@
 
 #include "src/scene.h"
 #include "src/simulator.h"
+#include "validate/silhouette.h"
 
 namespace sandpic::test {
 
@@ -36,17 +37,8 @@ inline SimResult simulate_scene(const Scene& s, Simulator& sim) {
   return sim.simulate(SimInput{s, init.grains, seg, order}, quiet);
 }
 
-// Sand height of every pixel column of a class map (CV_8U, 255 = no sand).
-inline std::vector<double> column_heights(const cv::Mat& class_map) {
-  std::vector<double> h(size_t(class_map.cols), 0);
-  for (int x = 0; x < class_map.cols; ++x)
-    for (int y = 0; y < class_map.rows; ++y)
-      if (class_map.at<uint8_t>(y, x) != 255) {
-        h[size_t(x)] = class_map.rows - y;
-        break;
-      }
-  return h;
-}
+// Sand height of every pixel column of a class map: validate/'s silhouette.
+inline std::vector<double> column_heights(const cv::Mat& class_map) { return silhouette(class_map); }
 
 // Slope angle of a single pile, in degrees: a least-squares line through
 // each flank between 20% and 80% of the peak height, the two averaged.

@@ -14,14 +14,6 @@
 namespace sandpic {
 namespace {
 
-double median(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
 std::string fmt(const char* f, double v) {
   if (!std::isfinite(v)) return "-";
   char buf[64];
@@ -32,6 +24,14 @@ std::string fmt(const char* f, double v) {
 const std::vector<Layers> kOrder = {Layers::AllDynamic, Layers::Three, Layers::Bcre};
 
 }  // namespace
+
+double median(std::vector<double> v) {
+  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
 
 std::string layers_name(Layers l) { return l == Layers::Three ? "three" : l == Layers::Bcre ? "bcre" : "all-dynamic"; }
 

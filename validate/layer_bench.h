@@ -48,4 +48,7 @@ cv::Mat layer_bench_plot(const std::vector<LayerBenchRow>& rows);
 
 std::string layers_name(Layers l);
 
+// The median of the finite values (NaN if none): the benchmarks' statistic.
+double median(std::vector<double> v);
+
 }  // namespace sandpic

@@ -124,12 +124,6 @@ struct SceneCommand {
   }
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
 // Speed is shown by medians of repeated in-process runs, never by a timed test.
 struct BenchCommand {
   SceneOptions scene;
