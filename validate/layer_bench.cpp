@@ -130,7 +130,7 @@ std::string layer_bench_table(const std::vector<LayerBenchRow>& rows) {
 }
 
 cv::Mat layer_bench_plot(const std::vector<LayerBenchRow>& rows) {
-  const int W = 800, H = 520, left = 80, right = 150, top = 30, bottom = 60;
+  const int W = 800, H = 520, left = 80, right = 175, top = 30, bottom = 60;
   cv::Mat img(H, W, CV_8UC3, cv::Scalar(255, 255, 255));
   std::map<std::string, std::map<int64_t, std::vector<double>>> pts;
   std::map<std::string, std::map<int64_t, int64_t>> counts;
