@@ -70,6 +70,7 @@ struct GrainWorld::Impl {
     t.setOrigin(at);
     o->setWorldTransform(t);
     set_surface(*o, r);
+    o->setActivationState(ISLAND_SLEEPING);  // never moves: its bounds are never refreshed
     world.addCollisionObject(o.get(), btBroadphaseProxy::StaticFilter,
                              btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     return o;
@@ -90,6 +91,10 @@ GrainWorld::GrainWorld(int width, int height, const std::array<double, kClasses>
   // Bullet's default 0.2 units/s would make every resting contact bounce:
   // gravity closes it by g·dt (~11 px/s) each step. Only impacts bounce.
   m.world.getSolverInfo().m_restitutionVelocityThreshold = btScalar(material.bounce_speed);
+  // Only moving bodies need their bounds refreshed each step. Bullet's
+  // default refreshes every object, and a refreshed static collider leaves
+  // the broadphase's tree of fixed objects for the tree of moving ones.
+  m.world.setForceUpdateAllAabbs(false);
   for (int k = 0; k < kClasses; ++k) {
     m.spheres[k] = std::make_unique<btSphereShape>(btScalar(radius_px[k]));
     m.spheres[k]->calculateLocalInertia(btScalar(mass[k]), m.inertia[k]);
@@ -129,6 +134,11 @@ int GrainWorld::add_body(int cls, Vec2 p, Vec2 v) {
   m.set_surface(*body, m.radius[cls]);
   body->setLinearFactor(btVector3(1, 1, 0));   // in the picture's plane
   body->setAngularFactor(btVector3(0, 0, 1));  // rolling in the plane only
+  // A grain rolls about z only: Bullet's rolling-friction row about the
+  // in-plane tangent would be solved for nothing, and a sphere has no
+  // gyroscopic torque.
+  body->setAnisotropicFriction(btVector3(0, 0, 1), btCollisionObject::CF_ANISOTROPIC_ROLLING_FRICTION);
+  body->setFlags(body->getFlags() & ~BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY);
   body->setActivationState(DISABLE_DEACTIVATION);  // the layer model decides rest, not Bullet
   m.world.addRigidBody(body.get());
   body->setLinearVelocity(btVector3(btScalar(v.x()), btScalar(v.y()), 0));
@@ -169,18 +179,10 @@ void GrainWorld::remove_static(int slot) {
   m.free_statics.push_back(slot);
 }
 
-void GrainWorld::raise_ground(Vec2 p, double r) {
+void GrainWorld::set_ground(int j, double height) {
   Impl& m = *impl_;
-  int from = std::max(0, int(std::ceil(p.x() - r))), to = std::min(m.width, int(std::floor(p.x() + r)));
-  if (r == 0) from = to = std::clamp(int(std::lround(p.x())), 0, m.width);
-  for (int j = from; j <= to; ++j) {
-    double dx = j - p.x();
-    float top = float(std::min<double>(m.height, p.y() + std::sqrt(std::max(0.0, r * r - dx * dx))));
-    for (int row = 0; row < 2; ++row) {
-      float& g = m.ground[size_t(row * (m.width + 1) + j)];
-      g = std::max(g, top);
-    }
-  }
+  const float h = float(std::clamp(height, 0.0, double(m.height)));
+  for (int row = 0; row < 2; ++row) m.ground[size_t(row * (m.width + 1) + j)] = h;
 }
 
 void GrainWorld::step(double dt) { impl_->world.stepSimulation(btScalar(dt), 0, btScalar(dt)); }

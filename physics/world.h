@@ -37,9 +37,9 @@ class GrainWorld {
   int add_static(int cls, Vec2 position);  // a collider that never moves
   void remove_static(int slot);
 
-  // Raises the height field under a grain of radius r centred at p to the
-  // grain's upper outline (r = 0: to p itself, at the nearest column).
-  void raise_ground(Vec2 p, double r);
+  // The height field's height at column j (x = j, 0..width): the floor, and
+  // the top of the fixed layer (three) or of the static layer (bcre).
+  void set_ground(int j, double height);
 
   void step(double dt);
   double deepest_overlap() const;  // px, over all contacts

@@ -111,6 +111,7 @@ struct Scene {
     double rest_displacement = 0.05;   // at rest: moved less than this (diameters) in a cycle
     int rest_cycles_any_slope = 0;     // at rest this many cycles: static on any slope (0: never)
     double slope_limit_deg = 35;       // paper §8.1's α, for the steepest drop θ
+    double slope_baseline_diameters = 4;  // θ measured this far to either side (largest grain diameters)
     double static_thickness_mm = 2;    // paper §8.1
     double insert_gap_diameters = 4;   // flight is analytic until this far above the pile
     double max_overlap = 1.0;          // divergence: overlap beyond this (small-grain diameters)

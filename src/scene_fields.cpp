@@ -369,6 +369,8 @@ std::vector<Field> make_fields() {
               "a grain at rest this many cycles in a row becomes static whatever the slope (0: never; faster, steeper)"),
       real("dem.slope_limit_deg", [](S& s) -> double& { return s.dem.slope_limit_deg; }, 0, 90,
            "§8.1's α: a grain becomes static only where its steepest drop to the static layer is below it"),
+      real("dem.slope_baseline_diameters", [](S& s) -> double& { return s.dem.slope_baseline_diameters; }, 0.5, 1000,
+           "§8.1's θ is the steepest drop to the static layer this far to either side, in the largest grain's diameters"),
       real("dem.static_thickness_mm", [](S& s) -> double& { return s.dem.static_thickness_mm; }, 0, 1000,
            "thickness of the static layer above the fixed one, mm (§8.1: 2)"),
       real("dem.insert_gap_diameters", [](S& s) -> double& { return s.dem.insert_gap_diameters; }, 0.5, 1e4,

@@ -1,10 +1,8 @@
 #pragma once
 // Helpers shared by the tests: small scenes and pile measurements.
 #include <cmath>
-#include <numbers>
 #include <vector>
 
-#include <Eigen/Dense>
 #include <opencv2/core.hpp>
 
 #include "src/scene.h"
@@ -40,25 +38,9 @@ inline SimResult simulate_scene(const Scene& s, Simulator& sim) {
 // Sand height of every pixel column of a class map: validate/'s silhouette.
 inline std::vector<double> column_heights(const cv::Mat& class_map) { return silhouette(class_map); }
 
-// Slope angle of a single pile, in degrees: a least-squares line through
-// each flank between 20% and 80% of the peak height, the two averaged.
+// Slope angle of a single pile, in degrees: validate/'s.
 inline double flank_angle_deg(const std::vector<double>& h, double column_width = 1) {
-  size_t peak = 0;
-  for (size_t i = 0; i < h.size(); ++i)
-    if (h[i] > h[peak]) peak = i;
-  auto fit = [&](int dir) {
-    std::vector<double> xs, ys;
-    for (long i = long(peak); i >= 0 && i < long(h.size()); i += dir)
-      if (h[size_t(i)] > 0.2 * h[peak] && h[size_t(i)] < 0.8 * h[peak])
-        xs.push_back(double(i) * column_width), ys.push_back(h[size_t(i)]);
-    if (xs.size() < 3) return double(NAN);
-    Eigen::MatrixXd A(xs.size(), 2);
-    Eigen::VectorXd b(xs.size());
-    for (size_t i = 0; i < xs.size(); ++i) A(long(i), 0) = xs[i], A(long(i), 1) = 1, b(long(i)) = ys[i];
-    Eigen::Vector2d line = A.colPivHouseholderQr().solve(b);
-    return std::atan(std::abs(line(0))) * 180 / std::numbers::pi;
-  };
-  return (fit(+1) + fit(-1)) / 2;
+  return sandpic::flank_angle_deg(h, column_width);
 }
 
 }  // namespace sandpic::test

@@ -16,4 +16,9 @@ std::vector<double> silhouette(const cv::Mat& class_map);
 // Both maps must have the same size.
 double silhouette_error(const cv::Mat& a, const cv::Mat& b);
 
+// Slope angle of a single pile, in degrees (paper Fig. 9): a least-squares
+// line through each flank between 20% and 80% of the peak height, the two
+// averaged. NaN if a flank has fewer than three columns in that band.
+double flank_angle_deg(const std::vector<double>& heights, double column_width = 1);
+
 }  // namespace sandpic

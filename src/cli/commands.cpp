@@ -16,6 +16,7 @@
 #include "src/errors.h"
 #include "src/output.h"
 #include "src/pipeline.h"
+#include "validate/friction_bench.h"
 #include "validate/layer_bench.h"
 
 namespace sandpic {
@@ -43,8 +44,9 @@ struct SceneOptions {
     cmd->add_option("--threads", threads, "worker threads (0: all cores); the picture does not depend on it");
   }
 
-  Scene build() const {
-    Scene s = scene_path.empty() ? Scene{} : load_scene(scene_path);
+  // `fallback`: the scene when none is given (the built-in default scene).
+  Scene build(const Scene& fallback = Scene{}) const {
+    Scene s = scene_path.empty() ? fallback : load_scene(scene_path);
     for (const std::string& a : sets) apply_setting(s, a);
     if (!mode.empty()) apply_setting(s, "mode=" + mode);
     if (seed) s.seed = uint64_t(*seed), s.layout_seed.reset(), s.physics_seed.reset();
@@ -60,6 +62,12 @@ struct SceneOptions {
            std::to_string(s.layout()) + ", physics seed " + std::to_string(s.physics_rng());
   }
 };
+
+void write_png(const std::string& path, const cv::Mat& img) {
+  std::vector<uchar> png;
+  if (!cv::imencode(".png", img, png)) throw SimulationError("PNG encoding failed for " + path);
+  write_atomic(path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+}
 
 std::unique_ptr<tbb::global_control> limit_threads(int n) {
   if (n <= 0) return nullptr;
@@ -101,11 +109,7 @@ struct RenderCommand {
     }
     write_atomic(out, std::string_view(reinterpret_cast<const char*>(r.png.data()), r.png.size()));
     if (!stats.empty()) write_atomic(stats, r.stats.dump(2) + "\n");
-    for (auto& [name, img] : r.stages) {
-      std::vector<uchar> png;
-      cv::imencode(".png", img, png);
-      write_atomic(stages + "/" + name, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
-    }
+    for (auto& [name, img] : r.stages) write_png(stages + "/" + name, img);
   }
 };
 
@@ -188,6 +192,14 @@ int64_t positive(const std::string& option, const std::string& item, int64_t max
   return v;
 }
 
+std::vector<Layers> layers_list(const std::string& text) {
+  return list_option<Layers>("--layers", text, [](const std::string& i) {
+    for (Layers l : {Layers::Three, Layers::Bcre, Layers::AllDynamic})
+      if (layers_name(l) == i) return l;
+    throw InputError("--layers: unknown model '" + i + "' (three, bcre or all-dynamic)");
+  });
+}
+
 // paper Fig. 12: the DEM's layer models side by side at several grain counts.
 struct BenchLayersCommand {
   SceneOptions scene;
@@ -213,11 +225,7 @@ struct BenchLayersCommand {
     LayerBenchOptions opt;
     opt.grains = list_option<int64_t>("--grains", grains, [](const std::string& i) { return positive("--grains", i, 100000000); });
     opt.seeds = list_option<uint64_t>("--seeds", seeds, [](const std::string& i) { return uint64_t(positive("--seeds", i, 9007199254740991)); });
-    opt.layers = list_option<Layers>("--layers", layers, [](const std::string& i) {
-      for (Layers l : {Layers::Three, Layers::Bcre, Layers::AllDynamic})
-        if (layers_name(l) == i) return l;
-      throw InputError("--layers: unknown model '" + i + "' (three, bcre or all-dynamic)");
-    });
+    opt.layers = layers_list(layers);
     opt.all_dynamic_max = all_dynamic_max;
     opt.bcre_max = bcre_max;
     if (!csv.empty()) check_writable(csv);
@@ -233,10 +241,56 @@ struct BenchLayersCommand {
     });
     std::fputs(layer_bench_table(rows).c_str(), stdout);
     if (!csv.empty()) write_atomic(csv, layer_bench_csv(rows));
-    if (!plot.empty()) {
-      std::vector<uchar> png;
-      cv::imencode(".png", layer_bench_plot(rows), png);
-      write_atomic(plot, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+    if (!plot.empty()) write_png(plot, layer_bench_plot(rows));
+  }
+};
+
+// paper Fig. 9: the pile's slope against friction, over several seeds.
+struct BenchFrictionCommand {
+  SceneOptions scene;
+  std::string friction = "0.1,0.4,0.9", seeds = "1,2,3", layers = "three,all-dynamic";
+  std::string csv, pictures;
+  void add_to(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand(
+        "bench-friction", "paper Fig. 9: the DEM pile's slope against friction, averaged over physics seeds");
+    scene.add_to(cmd);
+    cmd->add_option("--friction", friction, "friction values, comma-separated")->capture_default_str();
+    cmd->add_option("--seeds", seeds, "physics seeds, comma-separated")->capture_default_str();
+    cmd->add_option("--layers", layers, "layer models, comma-separated")->capture_default_str();
+    cmd->add_option("--csv", csv, "write every run as CSV");
+    cmd->add_option("--pictures", pictures, "write every run's picture into this folder");
+    cmd->callback([this] { run(); });
+  }
+  void run() {
+    Scene s = scene.build(pile_scene());
+    FrictionBenchOptions opt;
+    opt.friction = list_option<double>("--friction", friction, [](const std::string& i) {
+      size_t used = 0;
+      double v = std::stod(i, &used);
+      if (used != i.size() || !(v >= 0 && v <= 10)) throw InputError("--friction: '" + i + "' is not a number in 0..10");
+      return v;
+    });
+    opt.seeds = list_option<uint64_t>("--seeds", seeds, [](const std::string& i) { return uint64_t(positive("--seeds", i, 9007199254740991)); });
+    opt.layers = layers_list(layers);
+    if (!csv.empty()) check_writable(csv);
+    if (!pictures.empty()) check_folder(pictures);
+    s.mode = Mode::Dem;
+    auto threads = limit_threads(scene.threads);
+    auto sim = make_simulator(s);  // exit 2 in a build without Bullet
+    std::fprintf(stderr, "sandpic bench-friction: %s\n", scene.reproduce(s).c_str());
+    auto rows = run_friction_bench(s, opt, *sim, [](const FrictionBenchRow& r) {
+      std::fprintf(stderr, "  %-12s friction %.2f  seed %-6llu %7lld grains  %7.2f s  angle %5.1f°  silhouette error %.4f\n",
+                   r.layers.c_str(), r.friction, (unsigned long long)r.seed, (long long)r.grains, r.simulate_s,
+                   r.angle_deg, r.silhouette_error);
+    });
+    std::fputs(friction_bench_table(rows).c_str(), stdout);
+    if (!csv.empty()) write_atomic(csv, friction_bench_csv(rows));
+    for (const FrictionBenchRow& r : rows) {
+      if (pictures.empty()) break;
+      char name[128];
+      std::snprintf(name, sizeof name, "/%s-friction%.2f-seed%llu.png", r.layers.c_str(), r.friction,
+                    (unsigned long long)r.seed);
+      write_png(pictures + name, r.picture);
     }
   }
 };
@@ -252,10 +306,12 @@ int cli_main(int argc, char** argv) {
   SceneCommand scene;
   BenchCommand bench;
   BenchLayersCommand bench_layers;
+  BenchFrictionCommand bench_friction;
   render.add_to(app);
   scene.add_to(app);
   bench.add_to(app);
   bench_layers.add_to(app);
+  bench_friction.add_to(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

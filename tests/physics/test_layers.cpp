@@ -13,47 +13,73 @@ LayerRule rule() {
   r.rest_px = 0.05;
   r.rest_cycles_any_slope = 3;
   r.slope_limit_rad = 35 * std::numbers::pi / 180;
+  r.baseline = 3;
+  r.support_px = 0.1;
   r.band_px = 10;
   return r;
 }
 
-TEST(Layers, SlopeIsTheSteepestDropToTheStaticLayer) {
-  LayerHeights h(20);
-  EXPECT_NEAR(static_slope_rad(h, 10, 0), 0, 1e-12);  // on the flat floor
-  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 0.5 * j;  // a ramp of slope 0.5
-  EXPECT_NEAR(static_slope_rad(h, 10, 5), std::atan(0.5), 1e-12);
-  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 10 - 0.5 * j;  // the other way: the same drop
-  EXPECT_NEAR(static_slope_rad(h, 10, 5), std::atan(0.5), 1e-12);
-  // An apex: the paper's mean (θ1 + θ2)/2 would be 0 here.
-  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 10 - std::abs(j - 10);
-  EXPECT_NEAR(static_slope_rad(h, 10, 11), std::atan(2.0), 1e-12);
-  // In a hollow there is no drop.
-  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = std::abs(j - 10);
-  EXPECT_LT(static_slope_rad(h, 10, 0.5), 0);
+TEST(Layers, AStaticGrainRaisesTheColumnsItCoversToItsOutline) {
+  LayerHeights h(10);
+  h.add_static(4.3, 2.0, 0.55);  // covers columns 4 (its centre) and 5 (from x = 4.5)
+  EXPECT_DOUBLE_EQ(h.hs[4], 2.55);
+  EXPECT_NEAR(h.hs[5], 2.0 + std::sqrt(0.55 * 0.55 - 0.2 * 0.2), 1e-12);
+  EXPECT_EQ(h.hs[3], 0);
+  EXPECT_EQ(h.hs[6], 0);
+  h.add_static(4.3, 1.0, 0.55);  // a lower grain never lowers a column
+  EXPECT_DOUBLE_EQ(h.hs[4], 2.55);
+  EXPECT_DOUBLE_EQ(h.support(4.9, 0.28), h.hs[5]);  // a small grain over column 5 rests on it
+  h.add_fixed(4.3, 1.0, 0.55);
+  EXPECT_DOUBLE_EQ(h.hf[4], 1.55);
+  EXPECT_EQ(h.hs.size(), h.hf.size());
 }
 
-TEST(Layers, StaticNeedsRestAndAGentleSlopeOrLongRest) {
+TEST(Layers, SlopeIsTheSteepestDropToTheStaticLayerABaselineAway) {
+  LayerHeights h(20);
+  EXPECT_NEAR(static_slope_rad(h, 10, 0, 3), 0, 1e-12);  // on the flat floor
+  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 0.5 * j;  // a ramp of slope 0.5
+  EXPECT_NEAR(static_slope_rad(h, 10, 5, 3), std::atan(0.5), 1e-12);
+  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 10 - 0.5 * j;  // the other way: the same drop
+  EXPECT_NEAR(static_slope_rad(h, 10, 5, 3), std::atan(0.5), 1e-12);
+  // An apex: the paper's signed mean (θ1 + θ2)/2 would be 0 here.
+  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 10 - std::abs(j - 10);
+  EXPECT_NEAR(static_slope_rad(h, 10, 10, 3), std::atan(1.0), 1e-12);
+  // In a hollow there is no drop.
+  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = std::abs(j - 10);
+  EXPECT_LT(static_slope_rad(h, 10, 0.5, 3), 0);
+  // One column of grain-scale roughness beside the grain does not decide it.
+  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 5;
+  h.hs[11] = 0;
+  EXPECT_NEAR(static_slope_rad(h, 10, 5, 3), 0, 1e-12);
+  // At a wall only the open side counts.
+  EXPECT_NEAR(static_slope_rad(h, 1, 6, 3), std::atan2(1, 3), 1e-12);
+}
+
+TEST(Layers, StaticNeedsRestSupportAndAGentleSlopeOrLongRest) {
   LayerHeights h(20);
   LayerRule r = rule();
-  EXPECT_FALSE(becomes_static(h, r, 5, 0.5, 0.2, 0));  // moving
-  EXPECT_TRUE(becomes_static(h, r, 5, 0.5, 0.01, 1));  // at rest on the flat
-  EXPECT_DOUBLE_EQ(h.hs[5], 0.5);
-  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 2.0 * j;  // 63°: steeper than α
-  EXPECT_FALSE(becomes_static(h, r, 10, 20, 0.01, 1));
-  EXPECT_TRUE(becomes_static(h, r, 10, 20, 0.01, 3));  // held there for three cycles
+  EXPECT_FALSE(becomes_static(h, r, 5, 0.5, 0.5, 0.2, 0));   // moving
+  EXPECT_FALSE(becomes_static(h, r, 5, 0.5, 0.5, 0.01, 0));  // not yet a whole cycle at rest
+  EXPECT_TRUE(becomes_static(h, r, 5, 0.5, 0.5, 0.01, 1));   // at rest on the floor
+  EXPECT_FALSE(becomes_static(h, r, 5, 1.5, 0.5, 0.01, 1));  // at rest on a grain that is not static
+  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 2.0 * j;    // 63°: steeper than α
+  EXPECT_FALSE(becomes_static(h, r, 10, 20.5, 0.5, 0.01, 1));
+  EXPECT_TRUE(becomes_static(h, r, 10, 20.5, 0.5, 0.01, 3));  // held there for three cycles
   r.rest_cycles_any_slope = 0;  // the default: never static on a slope steeper than α
-  EXPECT_FALSE(becomes_static(h, r, 10, 20, 0.01, 1000));
+  EXPECT_FALSE(becomes_static(h, r, 10, 20.5, 0.5, 0.01, 1000));
+  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 0.5 * j;  // 27°: gentler than α
+  EXPECT_TRUE(becomes_static(h, r, 10, 5.5, 0.5, 0.01, 1));
 }
 
 TEST(Layers, FixedOnlyUnderTheStaticBand) {
   LayerHeights h(20);
   LayerRule r = rule();
   for (auto& v : h.hs) v = 30;
-  EXPECT_FALSE(becomes_fixed(h, r, 10, 25));  // inside the band
-  EXPECT_TRUE(becomes_fixed(h, r, 10, 15));
-  EXPECT_DOUBLE_EQ(h.hf[10], 15);
-  h.hs[12] = 18;  // a low static column nearby keeps the band whole
-  EXPECT_FALSE(becomes_fixed(h, r, 11, 12));
+  EXPECT_FALSE(becomes_fixed(h, r, 10, 19.6, 0.5));  // its top is inside the band
+  EXPECT_TRUE(becomes_fixed(h, r, 10, 19.4, 0.5));
+  h.hs[13] = 18;  // a low static column within the baseline keeps the band whole
+  EXPECT_FALSE(becomes_fixed(h, r, 11, 12, 0.5));
+  EXPECT_TRUE(becomes_fixed(h, r, 5, 12, 0.5));  // but not further away
 }
 
 }  // namespace
