@@ -67,6 +67,17 @@ double bounce_speed(const Water& w, double dt) {
   return 3 * *std::max_element(w.gravity_px_s2.begin(), w.gravity_px_s2.end()) * dt;
 }
 
+// The run ends when all but kUnsettled of the bodies have moved less than
+// kSettlePx (px) over the last kSettleCycles cycles: under 2 px/s at the
+// default time step.
+constexpr double kSettlePx = 0.25;
+constexpr int64_t kSettleCycles = 25;
+constexpr double kUnsettled = 0.002;
+// A grain whose insertion point is taken tries again this many steps later
+// (the grain in the way needs about 40 to clear it); retrying every step
+// cost 8% of the run in the neighbourhood checks.
+constexpr int kRetrySteps = 8;
+
 class DemRun {
  public:
   DemRun(const SimInput& in, Progress& progress);
@@ -82,6 +93,7 @@ class DemRun {
   void record(int32_t id, Vec2 p);
   void make_static(int32_t id, Vec2 p);
   double surface(double x, double r) const;
+  double cover(Vec2 p, double r) const;
   bool crowded(Vec2 p, double r) const;
   void index_bodies();
   int cell_of(Vec2 p) const;
@@ -108,16 +120,19 @@ class DemRun {
   std::vector<Layer> layer_;
   std::vector<int32_t> slot_;
   std::vector<int32_t> rested_;
+  std::vector<Vec2> anchor_;            // where a body was when it last moved a quarter pixel
+  std::vector<int64_t> anchor_cycle_;   // and the cycle it was there
   std::vector<Vec2> last_;
   std::vector<float> x_, y_;  // settled centre, window px (y down)
 
   std::vector<int32_t> dynamic_, statics_;  // ids, in the order they entered the layer
   std::priority_queue<Arrival, std::vector<Arrival>, std::greater<>> arrivals_;
   std::vector<float> landed_;   // tops of slow dynamic grains, per column, this cycle
+  std::vector<double> cover_;   // tops of all dynamic grains, per column, this cycle
   int64_t released_ = 0, inserted_ = 0, settled_ = 0, fixed_ = 0, delayed_ = 0;
   int64_t resting_ = 0;  // bodies at rest after the last cycle
   double t_ = 0, energy_budget_ = 0, deepest_ = 0;
-  int64_t steps_ = 0;
+  int64_t steps_ = 0, cycles_ = 0;
   size_t peak_bodies_ = 0;
   ordered_json samples_ = ordered_json::array();
   cv::Mat layer_snapshot_;
@@ -154,7 +169,7 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
   for (size_t u = 0; u < in.seg.units.size(); ++u)
     for (int64_t i = in.order.unit_begin[u]; i < in.order.unit_begin[u + 1]; ++i) unit_of_order_.push_back(int32_t(u));
   rule_.rest_px = s_.dem.rest_displacement * small_d_;
-  rule_.rest_cycles_any_slope = s_.dem.rest_cycles_any_slope;
+  rule_.patience_cycles = s_.dem.patience_cycles;
   rule_.slope_limit_rad = s_.dem.slope_limit_deg * std::numbers::pi / 180;
   rule_.band_px = s_.dem.static_thickness_mm * px_per_mm(s_);
   const double big_d = 2 * *std::max_element(radius_.begin(), radius_.end());
@@ -162,14 +177,18 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
   // Resting on the static layer: the bottom within a quarter of the smallest
   // diameter of H_s (overlap and the outline's rounding to columns).
   rule_.support_px = 0.25 * small_d_;
+  rule_.skin_px = s_.dem.skin_diameters * big_d / 2;
   const size_t n = size_t(in.grains.size());
   layer_.assign(n, Layer::Waiting);
   slot_.assign(n, -1);
   rested_.assign(n, 0);
+  anchor_.assign(n, Vec2(NAN, NAN));
+  anchor_cycle_.assign(n, 0);
   last_.assign(n, Vec2(NAN, NAN));
   x_.assign(n, NAN);
   y_.assign(n, NAN);
   landed_.assign(size_t(W_ + 1), 0.0f);
+  cover_.assign(size_t(W_ + 1), 0.0);
   cells_x_ = int(std::ceil(W_ / kCell)) + 1;
   cells_y_ = int(std::ceil(H_ / kCell)) + 1;
   cell_head_.assign(size_t(cells_x_) * cells_y_, -1);
@@ -180,6 +199,15 @@ double DemRun::surface(double x, double r) const {
   float h = 0;
   for (int j = from; j <= to; ++j) h = std::max({h, float(heights_.hs[size_t(j)]), landed_[size_t(j)]});
   return h;
+}
+
+// How deep a grain lies under the dynamic grains above it: the least, over
+// the columns it covers, of their top above its own.
+double DemRun::cover(Vec2 p, double r) const {
+  double least = INFINITY;
+  for (int j = heights_.first_column(p.x(), r); j <= heights_.last_column(p.x(), r); ++j)
+    least = std::min(least, cover_[size_t(j)] - (p.y() + r));
+  return least;
 }
 
 // Stage: grains leave their units at dem.release_rate in falling order and
@@ -247,7 +275,7 @@ void DemRun::insert_stage() {
     double x = std::clamp(exit_x(model_, o, id), r, W_ - r);
     double y = std::min(surface(x, r) + s_.dem.insert_gap_diameters * 2 * r, H_ - r);
     if (crowded(Vec2(x, y), r)) {
-      later.push_back({t_ + dt_, a.order});
+      later.push_back({t_ + kRetrySteps * dt_, a.order});
       ++delayed_;
       continue;
     }
@@ -296,8 +324,7 @@ void DemRun::make_static(int32_t id, Vec2 p) {
   ++settled_;
   heights_.add_static(p.x(), p.y(), r);
   if (layers_ == Layers::Bcre) {  // BCRE: the static layer is a height field
-    for (int j = heights_.first_column(p.x(), r); j <= heights_.last_column(p.x(), r); ++j)
-      world_.set_ground(j, heights_.hs[size_t(j)]);
+    world_.raise_ground(p, r);
     slot_[size_t(id)] = -1;
   } else {
     slot_[size_t(id)] = world_.add_static(k, p);
@@ -310,6 +337,7 @@ void DemRun::make_static(int32_t id, Vec2 p) {
 // a column of grains that came to rest together joins the static layer in
 // one cycle, each resting on the one just made static under it.
 void DemRun::classify_stage() {
+  ++cycles_;
   std::fill(landed_.begin(), landed_.end(), 0.0f);
   resting_ = 0;
   struct Body {
@@ -325,10 +353,19 @@ void DemRun::classify_stage() {
     const double moved = std::isfinite(last.x()) ? (p - last).norm() : INFINITY;
     rested_[size_t(id)] = moved < rule_.rest_px ? rested_[size_t(id)] + 1 : 0;
     last = p;
+    if (!((p - anchor_[size_t(id)]).norm() <= kSettlePx)) anchor_[size_t(id)] = p, anchor_cycle_[size_t(id)] = cycles_;
     bodies.push_back({p, moved, id});
   }
   std::sort(bodies.begin(), bodies.end(),
             [](const Body& a, const Body& b) { return a.p.y() != b.p.y() ? a.p.y() < b.p.y() : a.id < b.id; });
+  // The top of the dynamic grains over each column: how deep under them a
+  // grain lies (the skin).
+  std::fill(cover_.begin(), cover_.end(), 0.0);
+  for (const Body& b : bodies) {
+    const double r = radius_[in_.grains.cls[size_t(b.id)]];
+    for (int j = heights_.first_column(b.p.x(), r); j <= heights_.last_column(b.p.x(), r); ++j)
+      cover_[size_t(j)] = std::max(cover_[size_t(j)], LayerHeights::outline(b.p.x(), b.p.y(), r, j));
+  }
   std::vector<int32_t> still;
   still.reserve(dynamic_.size());
   for (const auto& [p, moved, id] : bodies) {
@@ -338,7 +375,7 @@ void DemRun::classify_stage() {
     // is out of reach of the flow: it joins the static layer.
     const bool buried = p.y() + r < heights_.hs[size_t(heights_.column(p.x()))] - rule_.band_px;
     if (layers_ != Layers::AllDynamic &&
-        (buried || becomes_static(heights_, rule_, p.x(), p.y(), r, moved, rested_[size_t(id)]))) {
+        (buried || becomes_static(heights_, rule_, p.x(), p.y(), r, moved, rested_[size_t(id)], cover(p, r)))) {
       make_static(id, p);
       continue;
     }
@@ -367,8 +404,7 @@ void DemRun::freeze_stage() {
     }
     world_.remove_static(slot_[size_t(id)]);
     heights_.add_fixed(p.x(), p.y(), r);
-    for (int j = heights_.first_column(p.x(), r); j <= heights_.last_column(p.x(), r); ++j)
-      world_.set_ground(j, heights_.hf[size_t(j)]);
+    world_.raise_ground(p, r);
     slot_[size_t(id)] = -1;
     layer_[size_t(id)] = Layer::Fixed;
     ++fixed_;
@@ -451,11 +487,18 @@ SimResult DemRun::run() {
     guard_stage();
     if (samples_.size() < 100000 && steps_ % (cycle * 10) == 0) sample_layers();
     if (layer_snapshot_.empty() && released_ >= n_ / 2) layer_snapshot_ = layer_map();
-    // The end: every grain has arrived and every body has rested two cycles
-    // (grains held on a slope steeper than α stay bodies to the end).
+    // The end: every grain has arrived and the picture is done: every body
+    // has rested two cycles, or all but a few (kUnsettled of them) have
+    // stayed within a quarter pixel for the last kSettleCycles cycles.
+    // Every body at rest in the same cycle alone left some runs going for
+    // 12 s of simulated time: among a thousand bodies on a static layer one
+    // is always jittering somewhere.
     if (released_ == n_ && arrivals_.empty()) {
-      bool all_rest = std::all_of(dynamic_.begin(), dynamic_.end(), [&](int32_t id) { return rested_[size_t(id)] >= 2; });
-      if (all_rest) break;
+      const bool all_rest = std::all_of(dynamic_.begin(), dynamic_.end(), [&](int32_t id) { return rested_[size_t(id)] >= 2; });
+      const auto unsettled = std::count_if(dynamic_.begin(), dynamic_.end(), [&](int32_t id) {
+        return cycles_ - anchor_cycle_[size_t(id)] < kSettleCycles;
+      });
+      if (all_rest || double(unsettled) <= kUnsettled * double(dynamic_.size())) break;
     }
     progress_.update(layers_ == Layers::AllDynamic ? inserted_ : settled_ + resting_);
     if (t_ > limit)

@@ -47,16 +47,18 @@ double static_slope_rad(const LayerHeights& h, double x, double level, int basel
 }
 
 bool becomes_static(const LayerHeights& h, const LayerRule& rule, double x, double y, double r, double moved,
-                    int rested) {
+                    int rested, double cover) {
   if (moved >= rule.rest_px || rested < 1) return false;
   const double level = h.support(x, r);
   if (y - r > level + rule.support_px) return false;  // on a moving grain
-  // paper §8.1: θ < α keeps grains on a too-steep static slope moving, so the
-  // static layer never grows steeper than α. Optionally (faster, at a
-  // measured cost in accuracy) a grain at rest for several cycles in a row
-  // becomes static whatever the slope.
-  const bool patient = rule.rest_cycles_any_slope > 0 && rested >= rule.rest_cycles_any_slope;
-  return patient || static_slope_rad(h, x, level, rule.baseline) < rule.slope_limit_rad;
+  // Under static grains (the static layer reaches over it, as at a pile's
+  // toe): it cannot go anywhere. The slope above it is not its own.
+  if (h.hs[size_t(h.column(x))] > y + r) return true;
+  // A grain at rest for long enough becomes static wherever it lies.
+  if (rule.patience_cycles > 0 && rested >= rule.patience_cycles) return true;
+  // paper §8.1: θ < α keeps grains on a too-steep static slope moving, so
+  // the static layer never grows steeper than α; and the skin stays dynamic.
+  return cover >= rule.skin_px && static_slope_rad(h, x, level, rule.baseline) < rule.slope_limit_rad;
 }
 
 bool becomes_fixed(const LayerHeights& h, const LayerRule& rule, double x, double y, double r) {

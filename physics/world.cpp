@@ -4,7 +4,8 @@
 #include <cmath>
 
 #include <btBulletDynamicsCommon.h>
-#include <BulletCollision/CollisionShapes/btHeightfieldTerrainShape.h>
+
+#include "physics/ground.h"
 
 namespace sandpic {
 namespace {
@@ -48,8 +49,7 @@ struct GrainWorld::Impl {
   std::vector<std::unique_ptr<btCollisionObject>> statics;
   std::vector<int> free_statics;
 
-  std::vector<float> ground;  // 2 rows of width+1 heights
-  std::unique_ptr<btHeightfieldTerrainShape> ground_shape;
+  std::unique_ptr<Ground> ground;
   std::unique_ptr<btBoxShape> wall_shape, floor_shape;
   std::vector<std::unique_ptr<btCollisionObject>> fixed_objects;
   int width = 0, height = 0;
@@ -99,12 +99,14 @@ GrainWorld::GrainWorld(int width, int height, const std::array<double, kClasses>
     m.spheres[k] = std::make_unique<btSphereShape>(btScalar(radius_px[k]));
     m.spheres[k]->calculateLocalInertia(btScalar(mass[k]), m.inertia[k]);
   }
-  // The floor and the fixed layer's top: a height field two rows deep in z,
-  // the grains' plane (z = 0) running down its middle.
-  m.ground.assign(size_t(2 * (width + 1)), 0.0f);
-  m.ground_shape = std::make_unique<btHeightfieldTerrainShape>(width + 1, 2, m.ground.data(), btScalar(0),
-                                                                btScalar(height), 1, false);
-  m.add_fixed(m.ground_shape.get(), btVector3(btScalar(width / 2.0), btScalar(height / 2.0), 0));
+  // The fixed layer's top: height field tiles two rows deep in z, the
+  // grains' plane (z = 0) running down their middle.
+  m.ground = std::make_unique<Ground>(
+      width, height,
+      [&m](btCollisionShape* shape, Vec2 c) {
+        return m.static_object(shape, btVector3(btScalar(c.x()), btScalar(c.y()), 0), m.radius[0]);
+      },
+      [&m](btCollisionObject* o) { m.world.removeCollisionObject(o); });
   // The window's sides, and a solid floor under the height field (a
   // triangle surface alone lets a pressed sphere through).
   m.wall_shape = std::make_unique<btBoxShape>(btVector3(10, btScalar(height), 10));
@@ -118,6 +120,7 @@ GrainWorld::GrainWorld(int width, int height, const std::array<double, kClasses>
 
 GrainWorld::~GrainWorld() {
   Impl& m = *impl_;
+  m.ground.reset();
   for (auto& b : m.bodies)
     if (b) m.world.removeRigidBody(b.get());
   for (auto& s : m.statics)
@@ -179,11 +182,7 @@ void GrainWorld::remove_static(int slot) {
   m.free_statics.push_back(slot);
 }
 
-void GrainWorld::set_ground(int j, double height) {
-  Impl& m = *impl_;
-  const float h = float(std::clamp(height, 0.0, double(m.height)));
-  for (int row = 0; row < 2; ++row) m.ground[size_t(row * (m.width + 1) + j)] = h;
-}
+void GrainWorld::raise_ground(Vec2 p, double r) { impl_->ground->raise(p, r); }
 
 void GrainWorld::step(double dt) { impl_->world.stepSimulation(btScalar(dt), 0, btScalar(dt)); }
 

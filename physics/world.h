@@ -2,7 +2,10 @@
 // The Bullet world of the DEM mode: grains as spheres kept in the picture's
 // plane, the window's walls, static grain colliders, and one height field
 // that is the floor and, raised as grains are fixed, the fixed layer's top.
-// Bullet units: one per pixel, y up, z out of the picture.
+// Bullet units: one per pixel, y up, z out of the picture. The height field
+// (physics/ground.h) has kGroundPerPx vertices per pixel: at one a small
+// grain (0.56 px) often spans no vertex, and raising the nearest ones to its
+// top puffed BCRE piles.
 #include <memory>
 #include <vector>
 
@@ -37,9 +40,10 @@ class GrainWorld {
   int add_static(int cls, Vec2 position);  // a collider that never moves
   void remove_static(int slot);
 
-  // The height field's height at column j (x = j, 0..width): the floor, and
-  // the top of the fixed layer (three) or of the static layer (bcre).
-  void set_ground(int j, double height);
+  // Raises the height field (the floor, and the top of the fixed layer in
+  // three, of the static layer in bcre) to the upper outline of a grain of
+  // radius r centred at p; r = 0 raises the nearest vertex to p.y.
+  void raise_ground(Vec2 p, double r);
 
   void step(double dt);
   double deepest_overlap() const;  // px, over all contacts

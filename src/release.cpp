@@ -11,12 +11,17 @@ ReleaseModel release_model(const Scene& s) {
   ReleaseModel m;
   m.gravity_px_s2 = s.release.gravity_m_s2 * 1000 * px_per_mm(s);
   m.outlet_width_px = s.release.outlet_width_mm * px_per_mm(s);
+  m.window_width_px = s.window.width;
   for (int k = 0; k < kClasses; ++k) m.min_drop_px[k] = grain_diameter_px(s, k);
   m.physics_seed = s.physics_rng();
   return m;
 }
 
-Outlet outlet(const ReleaseModel& m, const Unit& u) { return {u.outlet(), std::min(m.outlet_width_px, u.width())}; }
+Outlet outlet(const ReleaseModel& m, const Unit& u) {
+  Outlet o{u.outlet(), std::min({m.outlet_width_px, u.width(), m.window_width_px})};
+  o.centre.x() = std::clamp(o.centre.x(), o.width / 2, m.window_width_px - o.width / 2);
+  return o;
+}
 
 ReleasePath release(const ReleaseModel& m, const Outlet& o, const GrainSet& g, int32_t id) {
   ReleasePath p;

@@ -9,6 +9,7 @@ namespace sandpic {
 struct ReleaseModel {
   double gravity_px_s2 = 0;
   double outlet_width_px = 0;   // paper §7: 15 mm
+  double window_width_px = 0;   // an outlet lies inside the window
   std::array<double, kClasses> min_drop_px{};  // one grain diameter: keeps v_x finite
   uint64_t physics_seed = 0;
 };
@@ -23,7 +24,9 @@ struct ReleasePath {
 };
 
 // paper §7: the outlet in the middle of a unit's lowest edge, never wider
-// than the unit itself (a small ellipse has a small gap).
+// than the unit itself (a small ellipse has a small gap), and inside the
+// window: a unit reaching past a side wall has its outlet moved in, or every
+// grain it releases would drop down the wall in one file.
 struct Outlet {
   Vec2 centre;
   double width = 0;

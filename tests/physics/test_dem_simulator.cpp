@@ -19,7 +19,7 @@ Scene small_dem_scene(int width = 140, int region = 5) {
   Scene s = test::one_ellipse_scene(width, 90, region);
   s.release.outlet_width_mm = 4;
   s.mode = Mode::Dem;
-  s.dem.rest_cycles_any_slope = 3;
+  s.dem.patience_cycles = 3;
   return s;
 }
 
@@ -69,7 +69,7 @@ TEST(DemSimulator, PileSteepensWithFriction) {
 // bodies at the end, and the run ends when every body has rested.
 TEST(DemSimulator, DefaultSettingsEndWithEveryBodyAtRest) {
   Scene s = small_dem_scene(60);
-  s.dem.rest_cycles_any_slope = Scene{}.dem.rest_cycles_any_slope;
+  s.dem.patience_cycles = Scene{}.dem.patience_cycles;
   RunResult r = run(s);
   EXPECT_EQ(r.stats["grains"]["in_picture"], r.stats["grains"]["total"]);
   auto last = r.stats["backend"]["layer_counts"].back();

@@ -5,6 +5,7 @@
 
 #include "physics/dem_simulator.h"
 #include "physics/water.h"
+#include "physics/ground.h"
 #include "physics/world.h"
 
 namespace sandpic {
@@ -20,7 +21,7 @@ double rolled_px(double slope_deg, double rolling_resistance) {
   GrainWorld world(200, 200, dem_radii(s), dem_masses(s),
                    GrainMaterial{s.physics.friction, s.physics.restitution, rolling_resistance, 10, 1e9});
   const double t = std::tan(slope_deg * std::numbers::pi / 180), r = dem_radii(s)[0];
-  for (int j = 0; j <= 200; ++j) world.set_ground(j, 10 + t * j);
+  for (double x = 0; x <= 200; x += 1.0 / kGroundPerPx) world.raise_ground(Vec2(x, 10 + t * x), 0);
   const Vec2 start(100, 10 + t * 100 + r / std::cos(slope_deg * std::numbers::pi / 180));
   const int slot = world.add_body(0, start, Vec2(0, 0));
   for (double time = 0; time < 1; time += dt) {

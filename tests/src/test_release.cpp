@@ -48,5 +48,24 @@ TEST(Release, DropIsAtLeastOneDiameterAndOutletNoWiderThanTheUnit) {
   EXPECT_GT(hi, 519);
 }
 
+// A unit reaching past a side wall drops its grains from inside the window,
+// across the outlet's whole width, not in one file down the wall.
+TEST(Release, AnOutletPastAWallIsMovedInside) {
+  Scene s;
+  ReleaseModel m = release_model(s);
+  for (double cx : {-30.0, 1010.0}) {
+    Unit u;
+    u.ellipse = Ellipse{Vec2(cx, 100), 150, 40, 0};
+    Outlet o = outlet(m, u);
+    EXPECT_NEAR(o.width, 15 / 0.18, 1e-9);
+    for (int32_t id = 0; id < 1000; ++id) {
+      double x = exit_x(m, o, id);
+      EXPECT_GE(x, 0);
+      EXPECT_LE(x, s.window.width);
+    }
+    EXPECT_NEAR(std::abs(o.centre.x() - s.window.width / 2.0), s.window.width / 2.0 - o.width / 2, 1e-9);
+  }
+}
+
 }  // namespace
 }  // namespace sandpic

@@ -12,7 +12,7 @@ namespace {
 TEST(LayerBench, EveryModelAtEveryCountWithItsErrorAgainstAllDynamic) {
   Scene s = test::one_ellipse_scene(140, 90, 5);
   s.release.outlet_width_mm = 4;
-  s.dem.rest_cycles_any_slope = 3;  // the faster setting: see tests/physics/test_dem_simulator.cpp
+  s.dem.patience_cycles = 3;  // the faster setting: see tests/physics/test_dem_simulator.cpp
   LayerBenchOptions opt;
   opt.grains = {150, 400};
   opt.seeds = {1, 2};
