@@ -93,7 +93,6 @@ class DemRun {
   void record(int32_t id, Vec2 p);
   void make_static(int32_t id, Vec2 p);
   double surface(double x, double r) const;
-  double cover(Vec2 p, double r) const;
   bool crowded(Vec2 p, double r) const;
   void index_bodies();
   int cell_of(Vec2 p) const;
@@ -128,7 +127,6 @@ class DemRun {
   std::vector<int32_t> dynamic_, statics_;  // ids, in the order they entered the layer
   std::priority_queue<Arrival, std::vector<Arrival>, std::greater<>> arrivals_;
   std::vector<float> landed_;   // tops of slow dynamic grains, per column, this cycle
-  std::vector<double> cover_;   // tops of all dynamic grains, per column, this cycle
   int64_t released_ = 0, inserted_ = 0, settled_ = 0, fixed_ = 0, delayed_ = 0;
   int64_t resting_ = 0;  // bodies at rest after the last cycle
   double t_ = 0, energy_budget_ = 0, deepest_ = 0;
@@ -177,7 +175,6 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
   // Resting on the static layer: the bottom within a quarter of the smallest
   // diameter of H_s (overlap and the outline's rounding to columns).
   rule_.support_px = 0.25 * small_d_;
-  rule_.skin_px = s_.dem.skin_diameters * big_d / 2;
   const size_t n = size_t(in.grains.size());
   layer_.assign(n, Layer::Waiting);
   slot_.assign(n, -1);
@@ -188,7 +185,6 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
   x_.assign(n, NAN);
   y_.assign(n, NAN);
   landed_.assign(size_t(W_ + 1), 0.0f);
-  cover_.assign(size_t(W_ + 1), 0.0);
   cells_x_ = int(std::ceil(W_ / kCell)) + 1;
   cells_y_ = int(std::ceil(H_ / kCell)) + 1;
   cell_head_.assign(size_t(cells_x_) * cells_y_, -1);
@@ -199,15 +195,6 @@ double DemRun::surface(double x, double r) const {
   float h = 0;
   for (int j = from; j <= to; ++j) h = std::max({h, float(heights_.hs[size_t(j)]), landed_[size_t(j)]});
   return h;
-}
-
-// How deep a grain lies under the dynamic grains above it: the least, over
-// the columns it covers, of their top above its own.
-double DemRun::cover(Vec2 p, double r) const {
-  double least = INFINITY;
-  for (int j = heights_.first_column(p.x(), r); j <= heights_.last_column(p.x(), r); ++j)
-    least = std::min(least, cover_[size_t(j)] - (p.y() + r));
-  return least;
 }
 
 // Stage: grains leave their units at dem.release_rate in falling order and
@@ -358,14 +345,6 @@ void DemRun::classify_stage() {
   }
   std::sort(bodies.begin(), bodies.end(),
             [](const Body& a, const Body& b) { return a.p.y() != b.p.y() ? a.p.y() < b.p.y() : a.id < b.id; });
-  // The top of the dynamic grains over each column: how deep under them a
-  // grain lies (the skin).
-  std::fill(cover_.begin(), cover_.end(), 0.0);
-  for (const Body& b : bodies) {
-    const double r = radius_[in_.grains.cls[size_t(b.id)]];
-    for (int j = heights_.first_column(b.p.x(), r); j <= heights_.last_column(b.p.x(), r); ++j)
-      cover_[size_t(j)] = std::max(cover_[size_t(j)], LayerHeights::outline(b.p.x(), b.p.y(), r, j));
-  }
   std::vector<int32_t> still;
   still.reserve(dynamic_.size());
   for (const auto& [p, moved, id] : bodies) {
@@ -375,7 +354,7 @@ void DemRun::classify_stage() {
     // is out of reach of the flow: it joins the static layer.
     const bool buried = p.y() + r < heights_.hs[size_t(heights_.column(p.x()))] - rule_.band_px;
     if (layers_ != Layers::AllDynamic &&
-        (buried || becomes_static(heights_, rule_, p.x(), p.y(), r, moved, rested_[size_t(id)], cover(p, r)))) {
+        (buried || becomes_static(heights_, rule_, p.x(), p.y(), r, moved, rested_[size_t(id)]))) {
       make_static(id, p);
       continue;
     }

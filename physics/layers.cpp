@@ -47,7 +47,7 @@ double static_slope_rad(const LayerHeights& h, double x, double level, int basel
 }
 
 bool becomes_static(const LayerHeights& h, const LayerRule& rule, double x, double y, double r, double moved,
-                    int rested, double cover) {
+                    int rested) {
   if (moved >= rule.rest_px || rested < 1) return false;
   const double level = h.support(x, r);
   if (y - r > level + rule.support_px) return false;  // on a moving grain
@@ -57,8 +57,8 @@ bool becomes_static(const LayerHeights& h, const LayerRule& rule, double x, doub
   // A grain at rest for long enough becomes static wherever it lies.
   if (rule.patience_cycles > 0 && rested >= rule.patience_cycles) return true;
   // paper §8.1: θ < α keeps grains on a too-steep static slope moving, so
-  // the static layer never grows steeper than α; and the skin stays dynamic.
-  return cover >= rule.skin_px && static_slope_rad(h, x, level, rule.baseline) < rule.slope_limit_rad;
+  // the static layer never grows steeper than α.
+  return static_slope_rad(h, x, level, rule.baseline) < rule.slope_limit_rad;
 }
 
 bool becomes_fixed(const LayerHeights& h, const LayerRule& rule, double x, double y, double r) {

@@ -23,12 +23,9 @@
 //   one stays dynamic, so the static layer grows from the floor up, whole.
 // - Rest is a displacement over a cycle, not the paper's 3×10⁻⁵ m/s (far
 //   below any solver's resting jitter).
-// - A dynamic skin: a grain becomes static only once other grains rest on
-//   it (`skin_px`). With every grain a body, arriving grains keep pushing
-//   the surface they land on and round a pile's top (28.9° flanks on the
-//   Fig. 9 scene); frozen at first rest, the surface could not be pushed and
-//   the pile grew a sharp 40° cone. `patience_cycles` bounds the skin's
-//   cost where nothing lands: a grain at rest that long becomes static.
+// - A grain under static grains (the static layer reaching over it, as at a
+//   steep pile's toe) is static: it cannot go anywhere, and the slope above
+//   it is not its own (such grains stayed bodies to the end).
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -71,16 +68,14 @@ struct LayerRule {
   double slope_limit_rad = 0;     // α
   int baseline = 3;               // columns to either side for θ
   double support_px = 0;          // resting on the static layer: bottom at most this above H_s
-  double skin_px = 0;             // covered: the sand above the grain's top at least this thick
   double band_px = 0;             // static layer thickness
 };
 
 // Algorithm 2 lines 1-12: a dynamic grain of radius r at (x, y) that moved
-// `moved` px in the last cycle, has rested `rested` cycles in a row and lies
-// `cover` px under the top of the sand above it becomes static? (The caller
-// then calls add_static.)
+// `moved` px in the last cycle and has rested `rested` cycles in a row
+// becomes static? (The caller then calls add_static.)
 bool becomes_static(const LayerHeights& h, const LayerRule& rule, double x, double y, double r, double moved,
-                    int rested, double cover);
+                    int rested);
 // Algorithm 2 lines 13-21: a static grain becomes fixed once its top lies
 // deeper than the band under the lowest H_s nearby (the paper looks at column
 // j alone: one tall static grain would then fix grains beside the flow).

@@ -108,9 +108,8 @@ struct Scene {
     double water_density_g_cm3 = 1.0;
     double water_viscosity_pa_s = 1.0e-3;
     int cycle_steps = 40;              // paper §8.1: layers updated every 40 steps
-    double rest_displacement = 0.05;   // at rest: moved less than this (diameters) in a cycle
+    double rest_displacement = 0.01;   // at rest: moved less than this (small-grain diameters) in a cycle
     int patience_cycles = 0;           // at rest this many cycles: static anywhere (0: never)
-    double skin_diameters = 1;         // a grain becomes static only under this much resting sand
     double slope_limit_deg = 35;       // paper §8.1's α, for the steepest drop θ
     double slope_baseline_diameters = 4;  // θ measured this far to either side (largest grain diameters)
     double static_thickness_mm = 2;    // paper §8.1

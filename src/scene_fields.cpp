@@ -366,11 +366,7 @@ std::vector<Field> make_fields() {
       real("dem.rest_displacement", [](S& s) -> double& { return s.dem.rest_displacement; }, 0, 10,
            "a grain is at rest when it moved less than this in a cycle, in its diameters"),
       integer("dem.patience_cycles", [](S& s) -> int& { return s.dem.patience_cycles; }, 0, 100000,
-              "a grain at rest this many cycles in a row becomes static wherever it lies: on any slope, under "
-              "no skin (0: never; faster, less exact)"),
-      real("dem.skin_diameters", [](S& s) -> double& { return s.dem.skin_diameters; }, 0, 1000,
-           "the dynamic skin: a grain becomes static only under this much sand, in the largest grain's "
-           "diameters (0: none), so arriving grains still push the pile's surface as with every grain a body"),
+              "a grain at rest this many cycles in a row becomes static on any slope (0: never; faster, less exact)"),
       real("dem.slope_limit_deg", [](S& s) -> double& { return s.dem.slope_limit_deg; }, 0, 90,
            "§8.1's α: a grain becomes static only where its steepest drop to the static layer is below it"),
       real("dem.slope_baseline_diameters", [](S& s) -> double& { return s.dem.slope_baseline_diameters; }, 0.5, 1000,

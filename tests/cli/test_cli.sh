@@ -103,11 +103,20 @@ if [ "$BULLET" = with-bullet ]; then
   one_line; err_has "--grains"; absent "$T/g.csv"
   expect 2 "bench-layers bad model" -- "$BIN" bench-layers --layers three,four
   one_line; err_has "four"
+  # paper Fig. 9: the pile's slope against friction.
+  expect 0 "bench-friction" -- "$BIN" bench-friction --scale 0.25 --friction 0.1,0.9 --seeds 1 --layers three \
+    --csv "$T/fig9.csv" --pictures "$T/fig9"
+  is_png "$T/fig9/three-friction0.90-seed1.png"
+  if [ "$(wc -l <"$T/fig9.csv")" = 3 ] && grep -q "three: the mean angle" "$T/out"; then ok; else bad "bench-friction: $(cat "$T/out")"; fi
+  expect 2 "bench-friction bad friction" -- "$BIN" bench-friction --friction 0.4,abc --csv "$T/f.csv"
+  one_line; err_has "--friction"; absent "$T/f.csv"
 else
   expect 2 "dem without Bullet" -- "$BIN" render -o "$T/e.png" --mode dem
   one_line; err_has "Bullet"; absent "$T/e.png"
   expect 2 "bench-layers without Bullet" -- "$BIN" bench-layers --grains 100 --csv "$T/g.csv"
   one_line; err_has "Bullet"; absent "$T/g.csv"
+  expect 2 "bench-friction without Bullet" -- "$BIN" bench-friction --csv "$T/f.csv"
+  one_line; err_has "Bullet"; absent "$T/f.csv"
 fi
 
 # Every example renders (scaled down).

@@ -1,0 +1,40 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/dem_simulator.h"
+#include "validate/friction_bench.h"
+
+namespace sandpic {
+namespace {
+
+TEST(FrictionBench, EveryFrictionSeedAndModelWithAnglesAndErrors) {
+  Scene s = pile_scene();
+  apply_scale(s, 0.3);  // 90×36 px, about 320 grains
+  FrictionBenchOptions opt;
+  opt.friction = {0.1, 0.9};
+  opt.seeds = {1};
+  opt.layers = {Layers::Three, Layers::AllDynamic};
+  auto dem = make_dem_simulator();
+  int heard = 0;
+  auto rows = run_friction_bench(s, opt, *dem, [&](const FrictionBenchRow&) { ++heard; });
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(heard, 4);
+  for (const FrictionBenchRow& r : rows) {
+    EXPECT_GT(r.grains, 250);
+    EXPECT_TRUE(std::isfinite(r.angle_deg)) << r.layers << " " << r.friction;
+    EXPECT_GT(r.simulate_s, 0);
+    EXPECT_EQ(r.picture.size(), cv::Size(90, 36));
+    if (r.layers == "all-dynamic") EXPECT_EQ(r.silhouette_error, 0);
+    else EXPECT_GT(r.silhouette_error, 0);  // against all-dynamic, same friction and seed
+  }
+  std::string table = friction_bench_table(rows);
+  EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 7);  // header, 2 models × (2 rows + verdict)
+  EXPECT_NE(table.find("all-dynamic: the mean angle"), std::string::npos);
+  std::string csv = friction_bench_csv(rows);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
+}
+
+}  // namespace
+}  // namespace sandpic
