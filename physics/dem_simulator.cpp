@@ -345,6 +345,12 @@ void DemRun::classify_stage() {
   }
   std::sort(bodies.begin(), bodies.end(),
             [](const Body& a, const Body& b) { return a.p.y() != b.p.y() ? a.p.y() < b.p.y() : a.id < b.id; });
+  // A grain pressed into a static grain, a wall or the floor deeper than a
+  // quarter of a small grain is wedged between immovable things, where the
+  // solver cannot resolve it: it joins the static layer where it is. (At
+  // the paper's scale grains pushed into such wedges sank 0.7 px into the
+  // floor and stopped the run as a divergence.)
+  const std::vector<int> wedged = world_.wedged(0.25 * small_d_);
   std::vector<int32_t> still;
   still.reserve(dynamic_.size());
   for (const auto& [p, moved, id] : bodies) {
@@ -352,7 +358,8 @@ void DemRun::classify_stage() {
     const double r = radius_[k];
     // A grain buried under the static band (jostled, never quite at rest)
     // is out of reach of the flow: it joins the static layer.
-    const bool buried = p.y() + r < heights_.hs[size_t(heights_.column(p.x()))] - rule_.band_px;
+    const bool buried = p.y() + r < heights_.hs[size_t(heights_.column(p.x()))] - rule_.band_px ||
+                        std::binary_search(wedged.begin(), wedged.end(), slot_[size_t(id)]);
     if (layers_ != Layers::AllDynamic &&
         (buried || becomes_static(heights_, rule_, p.x(), p.y(), r, moved, rested_[size_t(id)]))) {
       make_static(id, p);

@@ -145,7 +145,10 @@ int GrainWorld::add_body(int cls, Vec2 p, Vec2 v) {
   body->setActivationState(DISABLE_DEACTIVATION);  // the layer model decides rest, not Bullet
   m.world.addRigidBody(body.get());
   body->setLinearVelocity(btVector3(btScalar(v.x()), btScalar(v.y()), 0));
-  return store(m.bodies, m.free_bodies, std::move(body));
+  btRigidBody* raw = body.get();
+  const int slot = store(m.bodies, m.free_bodies, std::move(body));
+  raw->setUserIndex(slot);
+  return slot;
 }
 
 void GrainWorld::remove_body(int slot) {
@@ -185,6 +188,24 @@ void GrainWorld::remove_static(int slot) {
 void GrainWorld::raise_ground(Vec2 p, double r) { impl_->ground->raise(p, r); }
 
 void GrainWorld::step(double dt) { impl_->world.stepSimulation(btScalar(dt), 0, btScalar(dt)); }
+
+std::vector<int> GrainWorld::wedged(double depth) const {
+  std::vector<int> slots;
+  btDispatcher& d = impl_->dispatcher;
+  for (int i = 0; i < d.getNumManifolds(); ++i) {
+    const btPersistentManifold* pm = d.getManifoldByIndexInternal(i);
+    const btCollisionObject *a = pm->getBody0(), *b = pm->getBody1();
+    if (a->isStaticObject() == b->isStaticObject()) continue;  // a body against a collider only
+    for (int c = 0; c < pm->getNumContacts(); ++c)
+      if (-pm->getContactPoint(c).getDistance() > depth) {
+        slots.push_back((a->isStaticObject() ? b : a)->getUserIndex());
+        break;
+      }
+  }
+  std::sort(slots.begin(), slots.end());
+  slots.erase(std::unique(slots.begin(), slots.end()), slots.end());
+  return slots;
+}
 
 double GrainWorld::deepest_overlap() const {
   double deepest = 0;

@@ -47,6 +47,10 @@ class GrainWorld {
 
   void step(double dt);
   double deepest_overlap() const;  // px, over all contacts
+  // Bodies pressed deeper than `depth` px into a collider (a static grain,
+  // the ground, a wall): wedged between immovable things, as no body can
+  // be between bodies.
+  std::vector<int> wedged(double depth) const;
 
  private:
   struct Impl;
