@@ -357,11 +357,12 @@ void DemRun::classify_stage() {
     const int k = in_.grains.cls[size_t(id)];
     const double r = radius_[k];
     // A grain buried under the static band (jostled, never quite at rest)
-    // is out of reach of the flow: it joins the static layer.
-    const bool buried = p.y() + r < heights_.hs[size_t(heights_.column(p.x()))] - rule_.band_px ||
-                        std::binary_search(wedged.begin(), wedged.end(), slot_[size_t(id)]);
+    // is out of reach of the flow, and a wedged one cannot get out: both
+    // join the static layer.
+    const bool trapped = p.y() + r < heights_.hs[size_t(heights_.column(p.x()))] - rule_.band_px ||
+                         std::binary_search(wedged.begin(), wedged.end(), slot_[size_t(id)]);
     if (layers_ != Layers::AllDynamic &&
-        (buried || becomes_static(heights_, rule_, p.x(), p.y(), r, moved, rested_[size_t(id)]))) {
+        (trapped || becomes_static(heights_, rule_, p.x(), p.y(), r, moved, rested_[size_t(id)]))) {
       make_static(id, p);
       continue;
     }
