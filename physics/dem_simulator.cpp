@@ -124,7 +124,7 @@ class DemRun {
   std::vector<Vec2> last_;
   std::vector<float> x_, y_;  // settled centre, window px (y down)
 
-  std::vector<int32_t> dynamic_, statics_;  // ids, in the order they entered the layer
+  std::vector<int32_t> dynamic_, statics_;  // ids: dynamic lowest first as of the last cycle, then arrivals
   std::priority_queue<Arrival, std::vector<Arrival>, std::greater<>> arrivals_;
   std::vector<float> landed_;   // tops of slow dynamic grains, per column, this cycle
   int64_t released_ = 0, inserted_ = 0, settled_ = 0, fixed_ = 0, delayed_ = 0;
