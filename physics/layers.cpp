@@ -49,11 +49,12 @@ double static_slope_rad(const LayerHeights& h, double x, double level, int basel
 bool becomes_static(const LayerHeights& h, const LayerRule& rule, double x, double y, double r, double moved,
                     int rested) {
   if (moved >= rule.rest_px || rested < 1) return false;
-  const double level = h.support(x, r);
-  if (y - r > level + rule.support_px) return false;  // on a moving grain
-  // Under static grains (the static layer reaches over it, as at a pile's
-  // toe): it cannot go anywhere. The slope above it is not its own.
-  if (h.hs[size_t(h.column(x))] > y + r) return true;
+  const double support = h.support(x, r);
+  if (y - r > support + rule.support_px) return false;  // on a moving grain
+  // The surface the grain rests on is at most its own bottom: a static
+  // grain uphill that reaches over its columns (a pile's toe, or any steep
+  // flank) is beside it, not under it, and the slope starts from here.
+  const double level = std::min(support, y - r);
   // A grain at rest for long enough becomes static wherever it lies.
   if (rule.patience_cycles > 0 && rested >= rule.patience_cycles) return true;
   // paper §8.1: θ < α keeps grains on a too-steep static slope moving, so

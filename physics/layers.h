@@ -23,9 +23,12 @@
 //   one stays dynamic, so the static layer grows from the floor up, whole.
 // - Rest is a displacement over a cycle, not the paper's 3×10⁻⁵ m/s (far
 //   below any solver's resting jitter).
-// - A grain under static grains (the static layer reaching over it, as at a
-//   steep pile's toe) is static: it cannot go anywhere, and the slope above
-//   it is not its own (such grains stayed bodies to the end).
+// - The surface a grain rests on is at most its own bottom: a static grain
+//   uphill whose outline reaches over the grain's columns (at a pile's toe,
+//   or beside any flank steeper than 30°) is beside it, not under it. (Read
+//   as a roof, as we did first, it made every grain that stopped beside a
+//   static flank static, however steep the flank.)
+// - α follows the friction unless the scene sets it (dem_slope_limit_deg).
 #include <cstddef>
 #include <cstdint>
 #include <vector>

@@ -87,7 +87,7 @@ TINY=(--set window.width=60 --set window.height=60 --set region.height=5 --set s
       --set segment.semi_major_min=20 --set release.outlet_width_mm=4)
 if [ "$BULLET" = with-bullet ]; then
   expect 0 "dem" -- "$BIN" render -o "$T/dem.png" --mode dem "${TINY[@]}" --stats "$T/dem.json" --stages "$T/dst"
-  is_png "$T/dem.png"; is_png "$T/dst/6-layers.png"
+  is_png "$T/dem.png"; is_png "$T/dst/6-layers.png"; is_png "$T/dst/7-layers-end.png"
   if grep -q '"in_picture": 300' "$T/dem.json"; then ok; else bad "dem stats: $(cat "$T/dem.json")"; fi
   echo keep >"$T/keep.png"
   expect 3 "dem divergence" -- "$BIN" render -o "$T/keep.png" --mode dem "${TINY[@]}" --set dem.max_overlap=0.01

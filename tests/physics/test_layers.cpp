@@ -69,10 +69,25 @@ TEST(Layers, StaticNeedsRestSupportAndAGentleSlopeOrLongRest) {
   EXPECT_FALSE(becomes_static(h, r, 10, 20.5, 0.5, 0.01, 1000));
   for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 0.5 * j;  // 27°: gentler than α
   EXPECT_TRUE(becomes_static(h, r, 10, 5.5, 0.5, 0.01, 1));
-  // Under the static layer's overhang, as at a steep pile's toe: static
-  // whatever the slope above it.
-  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = 2.0 * j;
+  // At a steep pile's toe, under the static layer's overhang: the slope
+  // starts from the grain's own bottom, and the floor beside it is flat.
+  for (int j = 0; j < 20; ++j) h.hs[size_t(j)] = j < 11 ? 0.0 : 2.0 * j;
   EXPECT_TRUE(becomes_static(h, r, 10, 0.5, 0.5, 0.01, 1));
+}
+
+// A grain at rest beside a static flank steeper than α, in the hollow of the
+// grain uphill (whose outline reaches over its column): it stays dynamic and
+// rolls on, or the static layer grows as steep as the grains happen to jam.
+TEST(Layers, AGrainBesideASteepStaticFlankStaysDynamic) {
+  LayerHeights h(40);
+  LayerRule r = rule();
+  r.patience_cycles = 0;
+  const double c = std::cos(50 * std::numbers::pi / 180), s = std::sin(50 * std::numbers::pi / 180);
+  for (int i = 5; i < 20; ++i) h.add_static(10 + i * c, 0.5 + i * s, 0.5);  // a 50° chain of touching grains
+  const double x = 10 + 4 * c, y = 0.5 + 4 * s;  // the next grain down the chain
+  ASSERT_GT(h.hs[size_t(h.column(x))], y + 0.5);  // the grain uphill reaches over its column
+  EXPECT_FALSE(becomes_static(h, r, x, y, 0.5, 0.01, 1));
+  EXPECT_TRUE(becomes_static(h, r, 10 + 0 * c, 0.5, 0.5, 0.01, 1));  // the chain's foot, on the floor
 }
 
 TEST(Layers, FixedOnlyUnderTheStaticBand) {
