@@ -8,6 +8,7 @@
 #include <numbers>
 #include <queue>
 
+#include "physics/crowding.h"
 #include "physics/layers.h"
 #include "physics/raster.h"
 #include "physics/water.h"
@@ -17,50 +18,6 @@
 
 namespace sandpic {
 
-std::array<double, kClasses> dem_radii(const Scene& s) {
-  std::array<double, kClasses> r;
-  for (int k = 0; k < kClasses; ++k) r[k] = grain_diameter_px(s, k) / 2;
-  return r;
-}
-
-double dem_time_step(const Scene& s) {
-  Water w = water_model(s);
-  double fastest = *std::max_element(w.terminal_px_s.begin(), w.terminal_px_s.end());
-  double smallest = 1e9;
-  for (int k = 0; k < kClasses; ++k) smallest = std::min(smallest, grain_diameter_px(s, k));
-  return s.dem.step_diameters * smallest / std::max(fastest, 1e-9);
-}
-
-// Bullet caps a contact's rolling-friction impulse at the coefficient itself,
-// as if the normal impulse were at most 1 (btSequentialImpulseConstraintSolver:
-// min(μ_r·N, μ_r)). With masses in g·px³/cm³ a resting grain's N per step is
-// ~40 and rolling resistance was ~40× too weak (a sphere rolled down 10°
-// slopes at μ_r = 0.5 R). Only ratios between classes matter to the solver,
-// so masses are scaled until the heaviest grain's weight per step is 1e-5:
-// a column of 10^4 grains stays under the cap.
-std::array<double, kClasses> dem_masses(const Scene& s) {
-  const Water w = water_model(s);
-  const double dt = dem_time_step(s);
-  std::array<double, kClasses> m;
-  double heaviest = 0;
-  for (int k = 0; k < kClasses; ++k) {
-    m[k] = s.grains.density_g_cm3[k] * std::pow(grain_diameter_px(s, k), 3);
-    heaviest = std::max(heaviest, m[k] * std::max(w.gravity_px_s2[k], 1e-9) * dt);
-  }
-  for (double& v : m) v *= 1e-5 / heaviest;
-  return m;
-}
-
-// A fixed α let friction no longer shape the piles: the static layer grew
-// as steep as α allowed at 0.4 and 0.9 alike (three layers, one pile of
-// 1,260 grains: 42° and 44° at α = 35°; 34° and 43° with this). Friction
-// sets how steep grains can stand, so it sets how steep they may freeze.
-double dem_slope_limit_deg(const Scene& s) {
-  if (s.dem.slope_limit_deg > 0) return s.dem.slope_limit_deg;
-  const double repose = std::atan(std::min(s.physics.friction, s.dem.rolling_resistance)) * 180 / std::numbers::pi;
-  return std::min(89.0, repose + s.dem.slope_margin_deg);
-}
-
 namespace {
 
 struct Arrival {
@@ -68,14 +25,6 @@ struct Arrival {
   int64_t order;  // index in the falling order: ties keep the falling order
   bool operator>(const Arrival& o) const { return time != o.time ? time > o.time : order > o.order; }
 };
-
-// A resting contact closes by g·dt each step (~11 px/s at the default
-// scale) and must not bounce, or piles jitter and creep flat (every grain a
-// body at friction 0.4: 20.8° with Bullet's default threshold, 24.6° with
-// this); a grain landing at its settling speed (45-174 px/s) does.
-double bounce_speed(const Water& w, double dt) {
-  return 3 * *std::max_element(w.gravity_px_s2.begin(), w.gravity_px_s2.end()) * dt;
-}
 
 // The run ends when all but kUnsettled of the bodies have moved less than
 // kSettlePx (px) over the last kSettleCycles cycles: under 2 px/s at the
@@ -103,9 +52,6 @@ class DemRun {
   void record(int32_t id, Vec2 p);
   void make_static(int32_t id, Vec2 p);
   double surface(double x, double r) const;
-  bool crowded(Vec2 p, double r) const;
-  void index_bodies();
-  int cell_of(Vec2 p) const;
   void sample_layers();
   cv::Mat layer_map() const;
 
@@ -144,11 +90,7 @@ class DemRun {
   size_t peak_bodies_ = 0;
   ordered_json samples_ = ordered_json::array();
   cv::Mat layer_snapshot_;
-  // The neighbourhood index of insert_stage (cells of kCell px, 2 > any diameter).
-  static constexpr double kCell = 2.0;
-  int cells_x_ = 0, cells_y_ = 0;
-  std::vector<int32_t> cell_head_, cell_next_;
-  std::vector<Vec2> cell_pos_;
+  Crowding crowding_;  // insert_stage's neighbourhood index
 };
 
 DemRun::DemRun(const SimInput& in, Progress& progress)
@@ -167,7 +109,8 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
       heights_(in.scene.window.width + 1),
       world_(W_, H_, radius_, mass_,
              GrainMaterial{in.scene.physics.friction, in.scene.physics.restitution, in.scene.dem.rolling_resistance,
-                           in.scene.dem.solver_iterations, bounce_speed(water_, dt_)}) {
+                           in.scene.dem.solver_iterations, dem_bounce_speed(water_, dt_)}),
+      crowding_(W_, H_) {
   small_d_ = 1e9;
   for (int k = 0; k < kClasses; ++k) {
     decay_[k] = std::exp(-water_.drag_per_s[k] * dt_);
@@ -195,9 +138,6 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
   x_.assign(n, NAN);
   y_.assign(n, NAN);
   landed_.assign(size_t(W_ + 1), 0.0f);
-  cells_x_ = int(std::ceil(W_ / kCell)) + 1;
-  cells_y_ = int(std::ceil(H_ / kCell)) + 1;
-  cell_head_.assign(size_t(cells_x_) * cells_y_, -1);
 }
 
 double DemRun::surface(double x, double r) const {
@@ -224,43 +164,13 @@ void DemRun::release_stage() {
   }
 }
 
-// Bodies bucketed by 2-px cell, rebuilt on the steps that insert: an
-// arriving grain only looks at its neighbourhood.
-void DemRun::index_bodies() {
-  std::fill(cell_head_.begin(), cell_head_.end(), -1);
-  cell_next_.resize(dynamic_.size());
-  cell_pos_.resize(dynamic_.size());
-  for (size_t i = 0; i < dynamic_.size(); ++i) {
-    Vec2 p = world_.position(slot_[size_t(dynamic_[i])]);
-    cell_pos_[i] = p;
-    int c = cell_of(p);
-    cell_next_[i] = c >= 0 ? cell_head_[size_t(c)] : -1;
-    if (c >= 0) cell_head_[size_t(c)] = int32_t(i);
-  }
-}
-
-int DemRun::cell_of(Vec2 p) const {
-  int cx = int(std::floor(p.x() / kCell)), cy = int(std::floor(p.y() / kCell));
-  if (cx < 0 || cy < 0 || cx >= cells_x_ || cy >= cells_y_) return -1;
-  return cy * cells_x_ + cx;
-}
-
-bool DemRun::crowded(Vec2 p, double r) const {
-  const int cx = int(std::floor(p.x() / kCell)), cy = int(std::floor(p.y() / kCell));
-  for (int y = std::max(0, cy - 1); y <= std::min(cells_y_ - 1, cy + 1); ++y)
-    for (int x = std::max(0, cx - 1); x <= std::min(cells_x_ - 1, cx + 1); ++x)
-      for (int32_t i = cell_head_[size_t(y * cells_x_ + x)]; i >= 0; i = cell_next_[size_t(i)]) {
-        double reach = r + radius_[in_.grains.cls[size_t(dynamic_[size_t(i)])]];
-        if ((cell_pos_[size_t(i)] - p).squaredNorm() < reach * reach) return true;
-      }
-  return false;
-}
-
 // Stage: an arriving grain becomes a body a few diameters above the pile,
-// at its settling speed; if another grain is in the way it waits a step.
+// at its settling speed; if another grain is in the way it tries again
+// kRetrySteps later.
 void DemRun::insert_stage() {
   if (arrivals_.empty() || arrivals_.top().time > t_) return;
-  index_bodies();
+  crowding_.clear();
+  for (int32_t id : dynamic_) crowding_.add(world_.position(slot_[size_t(id)]), radius_[in_.grains.cls[size_t(id)]]);
   std::vector<Arrival> later;
   while (!arrivals_.empty() && arrivals_.top().time <= t_) {
     Arrival a = arrivals_.top();
@@ -271,7 +181,7 @@ void DemRun::insert_stage() {
     const Outlet& o = outlets_[size_t(unit_of_order_[size_t(a.order)])];
     double x = std::clamp(exit_x(model_, o, id), r, W_ - r);
     double y = std::min(surface(x, r) + s_.dem.insert_gap_diameters * 2 * r, H_ - r);
-    if (crowded(Vec2(x, y), r)) {
+    if (crowding_.crowded(Vec2(x, y), r)) {
       later.push_back({t_ + kRetrySteps * dt_, a.order});
       ++delayed_;
       continue;
@@ -280,10 +190,7 @@ void DemRun::insert_stage() {
     slot_[size_t(id)] = world_.add_body(k, Vec2(x, y), v);
     layer_[size_t(id)] = Layer::Dynamic;
     dynamic_.push_back(id);
-    cell_pos_.push_back(Vec2(x, y));  // visible to the next arrivals of this step
-    int c = cell_of(Vec2(x, y));
-    cell_next_.push_back(c >= 0 ? cell_head_[size_t(c)] : -1);
-    if (c >= 0) cell_head_[size_t(c)] = int32_t(dynamic_.size() - 1);
+    crowding_.add(Vec2(x, y), r);  // in the way of the next arrivals of this step
     ++inserted_;
     energy_budget_ += mass_[k] * (0.5 * v.squaredNorm() + water_.gravity_px_s2[k] * y);
   }

@@ -54,20 +54,6 @@ TEST(DemSimulator, SameSeedSamePictureOtherPhysicsSeedOtherPicture) {
   EXPECT_NE(run(s).png, a.png);
 }
 
-// α follows the friction: the angle a lone grain slides (atan μ) or rolls
-// (atan μ_r) at, whichever is lower, plus the margin; a scene's own α wins.
-TEST(DemSimulator, SlopeLimitFollowsFrictionUnlessSet) {
-  Scene s;
-  s.physics.friction = 0.4;
-  EXPECT_NEAR(dem_slope_limit_deg(s), 21.801 + 5, 1e-3);
-  s.physics.friction = 0.9;  // rolling resistance 0.6 is the lower
-  EXPECT_NEAR(dem_slope_limit_deg(s), 30.964 + 5, 1e-3);
-  s.dem.slope_margin_deg = 0;
-  EXPECT_NEAR(dem_slope_limit_deg(s), 30.964, 1e-3);
-  s.dem.slope_limit_deg = 35;
-  EXPECT_DOUBLE_EQ(dem_slope_limit_deg(s), 35);
-}
-
 // paper §7, Fig. 9: flatter at friction 0.1, steeper at 0.9.
 TEST(DemSimulator, PileSteepensWithFriction) {
   double last = 0;

@@ -1,0 +1,28 @@
+#pragma once
+// The scene's DEM values in the world's units (one unit per pixel, seconds)
+// and the solver's (masses), shared by the simulator and the tests.
+#include <array>
+
+#include "physics/water.h"
+#include "src/scene.h"
+
+namespace sandpic {
+
+// The time step of a scene: the fastest grain (its settling speed in water)
+// moves dem.step_diameters small-grain diameters per step.
+double dem_time_step(const Scene& s);
+
+// Bullet's radius (px) and mass of each class. Masses are scaled so that a
+// grain's weight per step stays far below 1 (see dem_masses in the .cpp).
+std::array<double, kClasses> dem_radii(const Scene& s);
+std::array<double, kClasses> dem_masses(const Scene& s);
+
+// The speed (px/s) under which a contact does not bounce.
+double dem_bounce_speed(const Water& w, double dt);
+
+// paper §8.1's α in degrees: dem.slope_limit_deg, or with 0 the angle at
+// which a lone grain starts to slide (friction) or roll (rolling
+// resistance), whichever is lower, plus dem.slope_margin_deg.
+double dem_slope_limit_deg(const Scene& s);
+
+}  // namespace sandpic
