@@ -1,6 +1,7 @@
 #include "src/cli/commands.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -16,6 +17,9 @@
 #include "src/errors.h"
 #include "src/output.h"
 #include "src/pipeline.h"
+#include "src/init/init.h"
+#include "src/scene_file.h"
+#include "validate/compare.h"
 #include "validate/friction_bench.h"
 #include "validate/layer_bench.h"
 
@@ -297,6 +301,66 @@ struct BenchFrictionCommand {
 
 }  // namespace
 
+// Issue 4: how alike two pictures are, on luminance and on the pile.
+struct CompareCommand {
+  std::string a, b, scene_path;
+  bool as_json = false;
+  int bands = 8;
+  double blur = 3;
+
+  void add_to(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand("compare", "image similarity of two pictures of one scene (SSIM, PSNR, pile measures)");
+    cmd->add_option("a", a, "first picture (PNG)")->required();
+    cmd->add_option("b", b, "second picture, the same size")->required();
+    cmd->add_flag("--json", as_json, "print JSON");
+    cmd->add_option("--scene", scene_path, "the pictures' scene: its class colours tell sand from background "
+                                          "(none: the default scene's colours)");
+    cmd->add_option("--bands", bands, "horizontal bands for the composition error")->check(CLI::Range(1, 100000));
+    cmd->add_option("--blur", blur, "σ in px of the Gaussian blur before the blurred SSIM")->check(CLI::Range(0.0, 1000.0));
+    cmd->callback([this] { run(); });
+  }
+
+  static cv::Mat load(const std::string& path) {
+    try {
+      return read_image(path, "compare");
+    } catch (const InputError&) {
+      throw InputError("cannot read picture '" + path + "' (missing, unreadable or not an image)");
+    }
+  }
+
+  void run() {
+    const Scene s = scene_path.empty() ? Scene{} : load_scene(scene_path);
+    const cv::Mat ia = load(a), ib = load(b);
+    if (ia.size() != ib.size())
+      throw InputError(b + " is " + std::to_string(ib.cols) + "x" + std::to_string(ib.rows) + " px but " + a + " is " +
+                       std::to_string(ia.cols) + "x" + std::to_string(ia.rows));
+    const Comparison c = compare_pictures(ia, ib, s.grains.colors, bands, blur);
+    ordered_json j;
+    j["width"] = c.width;
+    j["height"] = c.height;
+    j["ssim"] = c.ssim;
+    j["psnr_db"] = std::isfinite(c.psnr_db) ? ordered_json(c.psnr_db) : ordered_json(nullptr);  // null: identical
+    j["identical"] = !std::isfinite(c.psnr_db);
+    j["silhouette_error"] = c.silhouette_error;
+    j["composition_error"] = c.composition_error;
+    j["composition_error_per_band"] = c.composition;
+    j["blur_sigma_px"] = c.blur_sigma_px;
+    j["ssim_blurred"] = c.ssim_blurred;
+    if (as_json) {
+      std::cout << j.dump(2) << "\n";
+      return;
+    }
+    std::printf("ssim               %.6f\n", c.ssim);
+    if (std::isfinite(c.psnr_db))
+      std::printf("psnr_db            %.3f\n", c.psnr_db);
+    else
+      std::printf("psnr_db            identical\n");
+    std::printf("silhouette_error   %.6f\n", c.silhouette_error);
+    std::printf("composition_error  %.6f  (%d bands)\n", c.composition_error, int(c.composition.size()));
+    std::printf("ssim_blurred       %.6f  (sigma %.3g px)\n", c.ssim_blurred, c.blur_sigma_px);
+  }
+};
+
 int cli_main(int argc, char** argv) {
   // OpenCV's own warnings would break the one-line error promise.
   cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
@@ -307,11 +371,13 @@ int cli_main(int argc, char** argv) {
   BenchCommand bench;
   BenchLayersCommand bench_layers;
   BenchFrictionCommand bench_friction;
+  CompareCommand compare;
   render.add_to(app);
   scene.add_to(app);
   bench.add_to(app);
   bench_layers.add_to(app);
   bench_friction.add_to(app);
+  compare.add_to(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

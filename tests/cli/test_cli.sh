@@ -38,6 +38,19 @@ for f in 1-initialization 2-filled 3-segmentation 4-falling-order 5-picture; do 
 expect 0 "render again" -- "$BIN" render -o "$T/b.png" --scale 0.25 --threads 1
 if cmp -s "$T/a.png" "$T/b.png"; then ok; else bad "same seed gave other bytes"; fi
 expect 0 "other seed" -- "$BIN" render -o "$T/c.png" --scale 0.25 --seed 7
+
+# compare: JSON with every measure; a picture with itself is identical.
+expect 0 "compare" -- "$BIN" compare "$T/a.png" "$T/c.png" --json
+for k in '"ssim"' '"psnr_db"' '"silhouette_error"' '"composition_error"' '"composition_error_per_band"' '"ssim_blurred"'; do
+  if grep -q -- "$k" "$T/out"; then ok; else bad "compare JSON lacks $k: $(cat "$T/out")"; fi
+done
+if grep -q '"identical": false' "$T/out"; then ok; else bad "two seeds compared as identical"; fi
+expect 0 "compare itself" -- "$BIN" compare "$T/a.png" "$T/b.png" --json
+if grep -q '"identical": true' "$T/out" && grep -q '"ssim": 1.0' "$T/out"; then ok; else bad "same picture: $(cat "$T/out")"; fi
+expect 2 "compare other sizes" -- "$BIN" compare "$T/a.png" "$ROOT/tests/fixtures/compare/ramp.png"
+one_line; err_has "ramp.png"
+expect 2 "compare missing" -- "$BIN" compare "$T/a.png" "$T/none.png"
+one_line; err_has "none.png"
 if ! cmp -s "$T/a.png" "$T/c.png"; then ok; else bad "another seed gave the same picture"; fi
 
 # The benchmark prints a median per stage.

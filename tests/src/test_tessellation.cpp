@@ -37,8 +37,11 @@ TEST(Tessellation, VaryingRowsGrowDownwardWithWidthsInRange) {
     last_y0 = c.y0;
   }
   EXPECT_GT(last_height, s.init.row_height_min * 2);
-  for (const Cell& c : t.cells)
-    if (c.x1 < s.window.width) EXPECT_GE(c.x1 - c.x0, s.init.cell_width_min - 1);
+  for (const Cell& c : t.cells) {
+    if (c.x1 < s.window.width) {
+      EXPECT_GE(c.x1 - c.x0, s.init.cell_width_min - 1);
+    }
+  }
 }
 
 TEST(Tessellation, StripsSpanTheWidth) {
