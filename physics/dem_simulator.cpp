@@ -390,7 +390,7 @@ SimResult DemRun::run() {
     freeze_stage();
     guard_stage();
     if (samples_.size() < 100000 && steps_ % (cycle * 10) == 0) sample_layers();
-    if (layer_snapshot_.empty() && inserted_ >= n_ / 2) layer_snapshot_ = layer_map();  // half the grains in
+    if (in_.stages && layer_snapshot_.empty() && inserted_ >= n_ / 2) layer_snapshot_ = layer_map();  // half in
     // The end: every grain has arrived and the picture is done: every body
     // has rested two cycles, or all but a few (kUnsettled of them) have
     // stayed within a quarter pixel for the last kSettleCycles cycles.
@@ -419,7 +419,7 @@ SimResult DemRun::run() {
   std::vector<uint8_t> cls(in_.grains.cls.begin(), in_.grains.cls.end());
   out.class_map = class_map_from_grains(W_, H_, x_, y_, cls, 1.2, kNoSand);
   if (!layer_snapshot_.empty()) out.stages.emplace_back("6-layers.png", layer_snapshot_);
-  out.stages.emplace_back("7-layers-end.png", layer_map());
+  if (in_.stages) out.stages.emplace_back("7-layers-end.png", layer_map());
   // Thin the samples to about 200 for the stats.
   ordered_json thin = ordered_json::array();
   size_t every = std::max<size_t>(1, samples_.size() / 200);

@@ -52,7 +52,7 @@ RunResult run_pipeline(const Scene& s, Simulator& sim, const RunOptions& opt) {
   timing["order_s"] = clock.lap();
 
   Progress progress(opt.progress);
-  SimResult sim_result = sim.simulate(SimInput{s, init.grains, seg, order}, progress);
+  SimResult sim_result = sim.simulate(SimInput{s, init.grains, seg, order, opt.stages}, progress);
   timing["simulate_s"] = clock.lap();
 
   const int64_t total = init.grains.size(), in_picture = grains_in_picture(s, sim_result);

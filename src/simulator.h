@@ -19,6 +19,7 @@ struct SimInput {
   const GrainSet& grains;
   const Segmentation& seg;
   const FallingOrder& order;
+  bool stages = false;  // --stages: the backend draws its own pictures
 };
 
 struct SimResult {

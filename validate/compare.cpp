@@ -5,6 +5,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "src/render.h"
 #include "src/simulator.h"
 #include "validate/silhouette.h"
 
@@ -71,13 +72,15 @@ double psnr(const cv::Mat& a, const cv::Mat& b) {
 
 cv::Mat decode_classes(const cv::Mat& bgr, const std::array<Rgb, kClasses>& colours) {
   CV_Assert(bgr.type() == CV_8UC3);
+  std::array<cv::Vec3b, kClasses> colour;
+  for (int k = 0; k < kClasses; ++k) colour[k] = sandpic::bgr(colours[k]);  // as render() draws them
   cv::Mat out(bgr.size(), CV_8U, cv::Scalar(kNoSand));
   for (int r = 0; r < bgr.rows; ++r) {
     const cv::Vec3b* p = bgr.ptr<cv::Vec3b>(r);
     uint8_t* o = out.ptr<uint8_t>(r);
     for (int c = 0; c < bgr.cols; ++c)
       for (int k = 0; k < kClasses; ++k)
-        if (p[c] == cv::Vec3b(colours[k].b, colours[k].g, colours[k].r)) {
+        if (p[c] == colour[k]) {
           o[c] = uint8_t(k);
           break;
         }

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "physics/dem_simulator.h"
+#include "physics/dem_params.h"
 #include "physics/water.h"
 #include "physics/ground.h"
 #include "physics/world.h"

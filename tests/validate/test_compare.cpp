@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "src/render.h"
 #include "src/simulator.h"
 #include "validate/compare.h"
 
@@ -40,10 +41,9 @@ TEST(Compare, SsimAndPsnrAgreeWithScikitImage) {
 
 TEST(Compare, ClassesComeBackFromTheirColours) {
   Scene s;
-  cv::Mat img(3, 2, CV_8UC3, cv::Scalar(240, 246, 248));  // the background colour (BGR)
-  const Rgb c2 = s.grains.colors[2];
-  img.at<cv::Vec3b>(2, 1) = cv::Vec3b(c2.b, c2.g, c2.r);
-  img.at<cv::Vec3b>(1, 1) = cv::Vec3b(c2.b, c2.g, uint8_t(c2.r + 1));  // near is not the colour
+  cv::Mat img(3, 2, CV_8UC3, bgr(s.render.background_color));
+  img.at<cv::Vec3b>(2, 1) = bgr(s.grains.colors[2]);
+  img.at<cv::Vec3b>(1, 1) = bgr(s.grains.colors[2]) + cv::Vec3b(0, 0, 1);  // near is not the colour
   cv::Mat k = decode_classes(img, s.grains.colors);
   EXPECT_EQ(k.at<uint8_t>(2, 1), 2);
   EXPECT_EQ(k.at<uint8_t>(1, 1), kNoSand);

@@ -26,8 +26,11 @@ TEST(FrictionBench, EveryFrictionSeedAndModelWithAnglesAndErrors) {
     EXPECT_TRUE(std::isfinite(r.angle_deg)) << r.layers << " " << r.friction;
     EXPECT_GT(r.simulate_s, 0);
     EXPECT_EQ(r.picture.size(), cv::Size(90, 36));
-    if (r.layers == "all-dynamic") EXPECT_EQ(r.silhouette_error, 0);
-    else EXPECT_GT(r.silhouette_error, 0);  // against all-dynamic, same friction and seed
+    if (r.layers == "all-dynamic") {
+      EXPECT_EQ(r.silhouette_error, 0);
+    } else {
+      EXPECT_GT(r.silhouette_error, 0);  // against all-dynamic, same friction and seed
+    }
   }
   std::string table = friction_bench_table(rows);
   EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 7);  // header, 2 models × (2 rows + verdict)
