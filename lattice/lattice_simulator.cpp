@@ -14,6 +14,8 @@ double repose_angle_deg(const Scene& s, int k) {
   return std::atan(s.lattice.repose_gain[k] * s.physics.friction) * 180 / std::numbers::pi;
 }
 
+double lattice_area_px(const Scene& s, int k) { return grain_area_px(s, k) * s.lattice.bulk; }
+
 SlopeRule make_slope_rule(double degrees, double rise_px, double column_px, double runout_px) {
   SlopeRule r;
   r.drop_per_column = std::tan(degrees * std::numbers::pi / 180) * column_px;
@@ -28,7 +30,7 @@ SlopeRule make_slope_rule(double degrees, double rise_px, double column_px, doub
 
 SlopeRule slope_rule(const Scene& s, int k) {
   const double column_px = 1 / s.lattice.resolution;
-  SlopeRule r = make_slope_rule(repose_angle_deg(s, k), grain_area_px(s, k) / column_px, column_px,
+  SlopeRule r = make_slope_rule(repose_angle_deg(s, k), lattice_area_px(s, k) / column_px, column_px,
                                 s.lattice.runout_px[k]);
   if (s.lattice.window_columns > 0) r.window = s.lattice.window_columns;
   return r;
@@ -54,7 +56,7 @@ class LatticeSimulator final : public Simulator {
       auto at = std::find(rules.begin(), rules.end(), r);
       rule_of[k] = int(at - rules.begin());
       if (at == rules.end()) rules.push_back(r);
-      area[k] = grain_area_px(s, k);
+      area[k] = lattice_area_px(s, k);
     }
     // A grain raises one column by its whole rise: a column holds whole
     // grains only, so a grid too fine for the window loses sand.

@@ -14,6 +14,8 @@ namespace sandpic {
 // lattice.repose_deg sets θ_k directly.
 double repose_angle_deg(const Scene& s, int k);
 SlopeRule slope_rule(const Scene& s, int k);
+// Area a grain of class k takes in the lattice's pile: grain_area_px · lattice.bulk.
+double lattice_area_px(const Scene& s, int k);
 // The rule for an angle, a grain's rise on its column (px) and a column width.
 SlopeRule make_slope_rule(double degrees, double rise_px, double column_px, double runout_px = 0);
 

@@ -1,11 +1,19 @@
 #!/usr/bin/env bash
 # Sets sandpic up on a Debian machine: installs the Debian packages it needs
 # (as root, or through sudo), then configures and builds into build/.
+# --tests also installs Chromium, which the validation report's test opens
+# headless (290 MB: a machine that only renders does not need it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 PACKAGES=(g++ cmake make pkgconf libeigen3-dev libopencv-dev libtbb-dev libbullet-dev
           libgtest-dev libcli11-dev nlohmann-json3-dev)
+for arg in "$@"; do
+  case "$arg" in
+    --tests) PACKAGES+=(chromium) ;;
+    *) echo "setup: unknown option $arg (only --tests)" >&2; exit 2 ;;
+  esac
+done
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -39,8 +39,9 @@ std::string mode_name(Mode m) { return m == Mode::Lattice ? "lattice" : "dem"; }
 
 }  // namespace
 
-RunResult run_pipeline(const Scene& s, Simulator& sim, const RunOptions& opt) {
-  validate(s);
+RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt) {
+  validate(given);
+  const Scene s = given.mode == Mode::Lattice ? with_calibration(given) : given;
   Clock clock;
   ordered_json timing;
   cv::Mat background = load_background(s);  // read early: a bad file fails before the work
@@ -76,6 +77,8 @@ RunResult run_pipeline(const Scene& s, Simulator& sim, const RunOptions& opt) {
 
   ordered_json& st = out.stats;
   st["mode"] = mode_name(s.mode);
+  st["scene_digest"] = scene_digest(s);
+  if (s.mode == Mode::Lattice && !s.lattice.calibration.empty()) st["calibration"] = s.resolve(s.lattice.calibration);
   st["seed"] = s.seed;
   st["layout_seed"] = s.layout();
   st["physics_seed"] = s.physics_rng();

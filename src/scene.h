@@ -97,6 +97,10 @@ struct Scene {
     std::optional<std::array<double, kClasses>> repose_deg;  // overrides the gain
     std::array<double, kClasses> runout_px{2, 2, 3, 3};  // extra travel down a slope
     int window_columns = 0;  // non-local rule width; 0: chosen per class
+    // Area a grain takes in the lattice's pile as a multiple of grain_area_px:
+    // the DEM's piles pack looser than units.packing (calibrate measures it).
+    double bulk = 1.0;
+    std::string calibration;  // `sandpic calibrate` output whose "lattice" values replace these
   } lattice;
   struct Dem {
     Layers layers = Layers::Three;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -156,6 +157,40 @@ ordered_json to_json(const Scene& s) {
     for (size_t dot; (dot = rest.find('.')) != std::string::npos; rest = rest.substr(dot + 1))
       node = &(*node)[rest.substr(0, dot)];
     (*node)[rest] = f.get(s);
+  }
+  return out;
+}
+
+std::string scene_digest(const Scene& s) {
+  ordered_json j = to_json(s);
+  j.erase("description");
+  j.erase(s.mode == Mode::Dem ? "lattice" : "dem");
+  const std::string text = j.dump();
+  uint64_t h = 1469598103934665603ull;  // FNV-1a, 64 bit
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)h);
+  return buf;
+}
+
+Scene with_calibration(const Scene& s) {
+  if (s.lattice.calibration.empty()) return s;
+  const std::string path = s.resolve(s.lattice.calibration);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw key_error("lattice.calibration", "cannot read '" + path + "'");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  json doc = json::parse(buf.str(), nullptr, false);
+  if (doc.is_discarded() || !doc.is_object() || !doc.contains("lattice") || !doc["lattice"].is_object())
+    throw key_error("lattice.calibration", "'" + path + "' is not a calibration (JSON with a \"lattice\" object)");
+  json part = json::object();
+  part["lattice"] = doc["lattice"];
+  part["lattice"].erase("calibration");
+  Scene out = s;
+  try {
+    apply_json(out, part);
+  } catch (const InputError& e) {
+    throw InputError("calibration '" + path + "': " + e.what());
   }
   return out;
 }

@@ -31,6 +31,14 @@ void apply_setting(Scene& s, const std::string& assignment);  // "key.path=value
 void apply_scale(Scene& s, double factor);
 void validate(const Scene& s);  // checks that involve several keys
 ordered_json to_json(const Scene& s);
+// 16 hex digits naming every value the scene's own mode reads (not its
+// description, not the other backend's section, not the contents of files
+// it names): two runs with one digest and seed give one picture. validate
+// keeps a run while its digest holds.
+std::string scene_digest(const Scene& s);
+// The scene with lattice.calibration's "lattice" values applied (itself when
+// it names no file). Read by the lattice mode only: a DEM run never opens it.
+Scene with_calibration(const Scene& s);
 std::string nearest_key(const std::string& path);
 
 }  // namespace sandpic

@@ -123,6 +123,15 @@ if [ "$BULLET" = with-bullet ]; then
   if [ "$(wc -l <"$T/fig9.csv")" = 3 ] && grep -q "three: the mean angle" "$T/out"; then ok; else bad "bench-friction: $(cat "$T/out")"; fi
   expect 2 "bench-friction bad friction" -- "$BIN" bench-friction --friction 0.4,abc --csv "$T/f.csv"
   one_line; err_has "--friction"; absent "$T/f.csv"
+  # Issue 4: calibrate writes a file a scene names; validate refuses a thin noise floor.
+  expect 0 "calibrate" -- "$BIN" calibrate "${TINY[@]}" --grains 300 --scenes 1 --out "$T/cal.json"
+  if grep -q '"repose_deg"' "$T/cal.json" && grep -q '"bulk"' "$T/cal.json"; then ok; else bad "cal.json: $(cat "$T/cal.json")"; fi
+  expect 0 "render calibrated" -- "$BIN" render "${TINY[@]}" --set lattice.calibration="$T/cal.json" -o "$T/cal.png" --stats "$T/cal-stats.json"
+  if grep -q '"calibration"' "$T/cal-stats.json"; then ok; else bad "calibrated stats: $(cat "$T/cal-stats.json")"; fi
+  expect 2 "calibrate too few grains" -- "$BIN" calibrate --grains 100 --out "$T/c2.json"
+  one_line; err_has "--grains"; absent "$T/c2.json"
+  expect 2 "validate few seeds" -- "$BIN" validate "${TINY[@]}" --seeds 3 --out "$T/val"
+  one_line; err_has "--seeds"; absent "$T/val/report.html"
 else
   expect 2 "dem without Bullet" -- "$BIN" render -o "$T/e.png" --mode dem
   one_line; err_has "Bullet"; absent "$T/e.png"
@@ -130,7 +139,13 @@ else
   one_line; err_has "Bullet"; absent "$T/g.csv"
   expect 2 "bench-friction without Bullet" -- "$BIN" bench-friction --csv "$T/f.csv"
   one_line; err_has "Bullet"; absent "$T/f.csv"
+  expect 2 "validate without Bullet" -- "$BIN" validate --out "$T/val"
+  one_line; err_has "validate needs the DEM mode"; absent "$T/val/report.html"
+  expect 2 "calibrate without Bullet" -- "$BIN" calibrate --out "$T/c.json"
+  one_line; err_has "calibrate needs the DEM mode"; absent "$T/c.json"
 fi
+expect 2 "missing calibration" -- "$BIN" render -o "$T/e.png" --set lattice.calibration="$T/nothing.json"
+one_line; err_has "lattice.calibration"; absent "$T/e.png"
 
 # Every example renders (scaled down).
 for scene in "$ROOT"/examples/*.json; do

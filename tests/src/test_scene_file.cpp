@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include "src/errors.h"
@@ -140,6 +141,60 @@ TEST(SceneFile, RelativeImagePathsStartAtTheSceneFile) {
   Scene s = load_scene(path);
   EXPECT_EQ(s.resolve(s.init.image), s.base_dir + "/pic.png");
   std::remove(path.c_str());
+}
+
+}  // namespace
+}  // namespace sandpic
+
+namespace sandpic {
+namespace {
+
+TEST(SceneFile, DigestNamesWhatTheModeReads) {
+  Scene a;
+  a.mode = Mode::Dem;
+  Scene b = a;
+  b.lattice.bulk = 1.2;  // the DEM does not read it
+  b.description = "another text";
+  EXPECT_EQ(scene_digest(a), scene_digest(b));
+  b.dem.solver_iterations = 11;
+  EXPECT_NE(scene_digest(a), scene_digest(b));
+  Scene c = a;
+  c.physics_seed = 2;
+  EXPECT_NE(scene_digest(a), scene_digest(c));
+  EXPECT_EQ(scene_digest(a).size(), 16u);
+}
+
+TEST(SceneFile, ScaleKeepsTheRunOut) {
+  Scene s;
+  apply_scale(s, 0.5);
+  EXPECT_EQ(s.lattice.runout_px, Scene{}.lattice.runout_px);
+}
+
+TEST(SceneFile, CalibrationFileErrorsNameTheKeyOrFile) {
+  const auto dir = std::filesystem::temp_directory_path();
+  Scene s;
+  s.lattice.calibration = (dir / "sandpic-no-such-calibration.json").string();
+  try {
+    with_calibration(s);
+    FAIL() << "a missing calibration was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lattice.calibration"), std::string::npos) << e.what();
+  }
+  const auto bad = dir / "sandpic-bad-calibration.json";
+  std::ofstream(bad) << R"({"lattice": {"repose_deg": [30, 30, 200, 30]}})";
+  s.lattice.calibration = bad.string();
+  try {
+    with_calibration(s);
+    FAIL() << "an angle of 200° was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lattice.repose_deg"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(bad.string()), std::string::npos) << e.what();
+  }
+  std::ofstream(bad) << R"({"lattice": {"repose_deg": [40, 40, 35, 35], "bulk": 1.1}})";
+  Scene good = with_calibration(s);
+  EXPECT_DOUBLE_EQ((*good.lattice.repose_deg)[2], 35);
+  EXPECT_DOUBLE_EQ(good.lattice.bulk, 1.1);
+  std::filesystem::remove(bad);
 }
 
 }  // namespace

@@ -1,0 +1,166 @@
+// Issue 4: sandpic validate (lattice against the DEM and its noise floor)
+// and sandpic calibrate (the lattice fitted to DEM piles).
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "src/cli/cli_common.h"
+#include "src/errors.h"
+#include "src/output.h"
+#include "src/progress.h"
+#include "validate/calibrate.h"
+#include "validate/report_html.h"
+#include "validate/validation.h"
+
+namespace sandpic {
+namespace {
+
+std::unique_ptr<Simulator> make_any(const Scene& s) { return make_simulator(s); }
+
+// Both commands need the DEM: a build without Bullet says so first.
+void need_dem(const Scene& base, const char* command) {
+  Scene s = base;
+  s.mode = Mode::Dem;
+  try {
+    make_simulator(s);
+  } catch (const InputError&) {
+    throw InputError(std::string(command) + " needs the DEM mode, and this sandpic was built without Bullet "
+                     "(cmake -DSANDPIC_WITH_BULLET=ON)");
+  }
+}
+
+// Progress lines on a terminal only.
+std::function<void(const std::string&)> logger(const char* command) {
+  const bool tty = Progress::stderr_is_terminal();
+  return [tty, command](const std::string& line) {
+    if (tty) std::fprintf(stderr, "%s: %s\n", command, line.c_str());
+  };
+}
+
+struct ValidateCommand {
+  SceneOptions scene;
+  std::string out, sweep = "lattice,dem", calibration;
+  int seeds = 4, bands = 8;
+  double blur = 3;
+  int64_t all_dynamic_max = 5000;
+
+  void add_to(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand(
+        "validate", "lattice vs DEM on one scene, the DEM's seed-to-seed noise floor, error against run time");
+    scene.add_to(cmd);
+    cmd->add_option("--out", out, "folder for report.html, report.json and the pictures (DEM runs are kept in "
+                                  "OUT/runs and reused while the scene is unchanged)")->required();
+    cmd->add_option("--seeds", seeds, "DEM runs beyond the scene's physics seed (at least 4)")->capture_default_str();
+    cmd->add_option("--sweep", sweep, "settings swept for error against time: lattice, dem, both or none")
+        ->capture_default_str();
+    cmd->add_option("--calibration", calibration, "a sandpic calibrate file for the lattice run");
+    cmd->add_option("--all-dynamic-max", all_dynamic_max, "largest grain count swept with dem.layers=all-dynamic")
+        ->capture_default_str();
+    cmd->add_option("--bands", bands, "horizontal bands for the composition error")->check(CLI::Range(1, 100000));
+    cmd->add_option("--blur", blur, "σ in px of the blur before the blurred SSIM")->check(CLI::Range(0.0, 1000.0));
+    cmd->callback([this] { run(); });
+  }
+
+  void run() {
+    Scene s = scene.build();
+    ValidateOptions opt;
+    opt.extra_seeds = seeds;
+    if (seeds < 4) throw InputError("--seeds must be at least 4: the noise floor needs five or more DEM runs");
+    opt.sweep_lattice = sweep == "lattice" || sweep == "lattice,dem" || sweep == "dem,lattice" || sweep == "both";
+    opt.sweep_dem = sweep == "dem" || sweep == "lattice,dem" || sweep == "dem,lattice" || sweep == "both";
+    if (!opt.sweep_lattice && !opt.sweep_dem && sweep != "none")
+      throw InputError("--sweep: '" + sweep + "' is not one of lattice, dem, lattice,dem, both, none");
+    opt.all_dynamic_max = all_dynamic_max;
+    opt.bands = bands;
+    opt.blur_sigma_px = blur;
+    if (!calibration.empty()) {
+      if (!std::filesystem::exists(calibration))
+        throw InputError("--calibration: cannot read '" + calibration + "'");
+      s.lattice.calibration = std::filesystem::absolute(calibration).string();
+      with_calibration(s);  // a bad file fails now, not after the DEM runs
+    }
+    need_dem(s, "validate");
+    while (out.size() > 1 && out.back() == '/') out.pop_back();
+    check_folder(out);
+    check_folder(out + "/runs");
+    for (const char* f : {"report.json", "report.html", "lattice.png", "difference.png"}) check_writable(out + "/" + f);
+    opt.cache_dir = out + "/runs";
+    auto threads = limit_threads(scene.threads);
+    const std::string reproduce = "sandpic validate: " + scene.reproduce(s) +
+                                  (scene.scale != 1 ? ", --scale " + std::to_string(scene.scale) : std::string()) +
+                                  (calibration.empty() ? std::string() : ", --calibration " + calibration);
+    Validation v;
+    try {
+      v = run_validation(s, opt, make_any, logger("validate"));
+    } catch (const SimulationError& e) {
+      throw SimulationError(std::string(e.what()) + "; to reproduce: " + scene.reproduce(s));
+    }
+    write_png(out + "/lattice.png", v.lattice.picture);
+    write_png(out + "/difference.png", v.heat_map);
+    write_atomic(out + "/report.json", validation_json(v, reproduce).dump(2) + "\n");
+    write_atomic(out + "/report.html", validation_html(v, reproduce));
+    std::printf("sandpic validate: %lld grains, %zu DEM runs\n", (long long)v.lattice.grains, v.dem.size());
+    std::printf("%-18s %12s %12s %8s\n", "metric", "lattice", "noise_floor", "ratio");
+    for (const MetricRow& m : v.metrics) std::printf("%-18s %12.5f %12.5f %8.3f\n", m.name.c_str(), m.lattice, m.floor, m.ratio);
+    std::printf("time: lattice %.4g s, DEM %.4g s (medians of simulate_s), ratio %.0f\n", v.lattice_s, v.dem_s,
+                v.time_ratio);
+    std::printf("report: %s/report.html\n", out.c_str());
+  }
+};
+
+struct CalibrateCommand {
+  SceneOptions scene;
+  std::string out, seeds = "1,2";
+  int64_t grains = 8000;
+  int scenes = 3;
+
+  void add_to(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand(
+        "calibrate", "fit the lattice's rule values (angle of repose, run-out, bulk) to DEM piles of variants of a scene");
+    scene.add_to(cmd);
+    cmd->add_option("--out", out, "the calibration (JSON); a scene uses it through lattice.calibration")->required();
+    cmd->add_option("--grains", grains, "grains per calibration scene")->capture_default_str()->check(CLI::Range(int64_t(100), int64_t(10000000)));
+    cmd->add_option("--scenes", scenes, "calibration scenes (other layouts and tessellations of the scene)")
+        ->capture_default_str()->check(CLI::Range(1, 100));
+    cmd->add_option("--seeds", seeds, "DEM physics seeds per calibration scene, comma-separated (two or more)")
+        ->capture_default_str();
+    cmd->callback([this] { run(); });
+  }
+
+  void run() {
+    Scene s = scene.build();
+    CalibrateOptions opt;
+    opt.grains = grains;
+    opt.scenes = scenes;
+    opt.physics_seeds = list_option<uint64_t>("--seeds", seeds, [](const std::string& i) {
+      return uint64_t(positive("--seeds", i, 9007199254740991));
+    });
+    need_dem(s, "calibrate");
+    check_writable(out);
+    auto threads = limit_threads(scene.threads);
+    Calibration c = calibrate(s, opt, make_any, logger("calibrate"));
+    write_atomic(out, calibration_json(s, c).dump(2) + "\n");
+    std::printf("sandpic calibrate: %zu scenes x %zu DEM seeds, %lld lattice runs\n", size_t(opt.scenes),
+                opt.physics_seeds.size(), (long long)c.lattice_runs);
+    std::printf("repose_deg %.2f %.2f %.2f %.2f  runout_px %g %g %g %g  bulk %.4f\n", c.repose_deg[0], c.repose_deg[1],
+                c.repose_deg[2], c.repose_deg[3], c.runout_px[0], c.runout_px[1], c.runout_px[2], c.runout_px[3], c.bulk);
+    std::printf("silhouette error on the calibration scenes: %.5f before, %.5f after (DEM seed to seed %.5f)\n",
+                c.error_before, c.error_after, c.noise_floor);
+  }
+};
+
+struct ValidationCommands {
+  ValidateCommand validate;
+  CalibrateCommand calibrate;
+};
+
+}  // namespace
+
+std::shared_ptr<void> add_validation_commands(CLI::App& app) {
+  auto c = std::make_shared<ValidationCommands>();
+  c->validate.add_to(app);
+  c->calibrate.add_to(app);
+  return c;
+}
+
+}  // namespace sandpic

@@ -1,0 +1,113 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "lattice/lattice_simulator.h"
+#include "src/errors.h"
+#include "validate/report_html.h"
+#include "validate/validation.h"
+
+namespace sandpic {
+namespace {
+
+// The plumbing of validate with the lattice standing in for the DEM (its
+// physics seed only breaks ties, so its "noise floor" is small but not 0):
+// quick, and it needs no Bullet. The real DEM runs in the CLI test.
+SimulatorFactory lattice_for_all() {
+  return [](const Scene&) { return make_lattice_simulator(); };
+}
+
+Scene small_scene() {
+  Scene s;
+  apply_scale(s, 0.0845);
+  return s;
+}
+
+std::string temp_dir(const std::string& name) {
+  auto d = std::filesystem::temp_directory_path() / ("sandpic-test-" + name);
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d.string();
+}
+
+TEST(Validation, MeanComparisonAveragesPsnrThroughTheMeanSquaredError) {
+  Comparison a, b;
+  a.psnr_db = 20, b.psnr_db = 30;  // MSE 650.25 and 65.025
+  a.ssim = 0.2, b.ssim = 0.4;
+  a.composition = {0.1, 0.3}, b.composition = {0.3, 0.5};
+  Comparison m = mean_comparison({a, b});
+  EXPECT_NEAR(m.psnr_db, 10 * std::log10(255.0 * 255 / ((650.25 + 65.025) / 2)), 1e-9);
+  EXPECT_NEAR(m.ssim, 0.3, 1e-12);
+  EXPECT_NEAR(m.composition[1], 0.4, 1e-12);
+  b.psnr_db = INFINITY;  // identical pictures add no error
+  EXPECT_NEAR(mean_comparison({a, b}).psnr_db, 20 + 10 * std::log10(2.0), 1e-9);
+}
+
+TEST(Validation, RunsTheEnsembleKeepsItAndReportsEveryMetric) {
+  const std::string dir = temp_dir("validation");
+  ValidateOptions opt;
+  opt.cache_dir = dir;
+  opt.sweep_dem = true;
+  opt.all_dynamic_max = 0;  // the all-dynamic point is skipped, and says why
+  opt.lattice_timing_runs = 1;
+  const Scene s = small_scene();
+  Validation v = run_validation(s, opt, lattice_for_all(), [](const std::string&) {});
+  ASSERT_EQ(v.dem.size(), 5u);
+  EXPECT_EQ(v.dem[0].physics_seed, s.physics_rng());
+  EXPECT_EQ(v.dem[4].physics_seed, s.physics_rng() + 4);
+  ASSERT_EQ(v.metrics.size(), 5u);
+  EXPECT_EQ(v.metrics[0].name, "silhouette_error");
+  for (const MetricRow& m : v.metrics) EXPECT_TRUE(std::isfinite(m.lattice)) << m.name;
+  bool skipped_all_dynamic = false;
+  int lattice_points = 0;
+  for (const ValidationRun& r : v.sweep) {
+    if (r.setting == "dem.layers=all-dynamic") skipped_all_dynamic = !r.skipped.empty();
+    lattice_points += r.group == "sweep-lattice";
+  }
+  EXPECT_TRUE(skipped_all_dynamic);
+  EXPECT_GE(lattice_points, 6);
+  EXPECT_FALSE(v.heat_map.empty());
+  for (const ValidationRun& d : v.dem) EXPECT_FALSE(d.cached);
+
+  // Again: every DEM run comes from the folder, with the same picture.
+  Validation again = run_validation(s, opt, lattice_for_all(), [](const std::string&) {});
+  for (size_t i = 0; i < v.dem.size(); ++i) {
+    EXPECT_TRUE(again.dem[i].cached);
+    EXPECT_EQ(cv::norm(again.dem[i].picture, v.dem[i].picture, cv::NORM_INF), 0);
+  }
+  EXPECT_DOUBLE_EQ(again.metrics[0].floor, v.metrics[0].floor);
+  // A changed DEM value is a new scene: not reused.
+  Scene changed = s;
+  changed.dem.solver_iterations = 7;
+  opt.sweep_dem = opt.sweep_lattice = false;
+  Validation other = run_validation(changed, opt, lattice_for_all(), [](const std::string&) {});
+  for (const ValidationRun& d : other.dem) EXPECT_FALSE(d.cached);
+
+  const ordered_json j = validation_json(v, "test");
+  EXPECT_TRUE(j["headline"].contains("silhouette_error_ratio"));
+  EXPECT_TRUE(j["headline"].contains("time_ratio"));
+  EXPECT_EQ(j["runs"].size(), 6u);
+  const std::string html = validation_html(v, "test");
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Validation, NeedsFiveDemRuns) {
+  ValidateOptions opt;
+  opt.extra_seeds = 3;
+  EXPECT_THROW(run_validation(small_scene(), opt, lattice_for_all(), [](const std::string&) {}), InputError);
+}
+
+TEST(Validation, Base64AsRfc4648) {
+  auto b = [](std::string s) { return base64(std::vector<unsigned char>(s.begin(), s.end())); };
+  EXPECT_EQ(b(""), "");
+  EXPECT_EQ(b("f"), "Zg==");
+  EXPECT_EQ(b("fo"), "Zm8=");
+  EXPECT_EQ(b("foo"), "Zm9v");
+  EXPECT_EQ(b("foobar"), "Zm9vYmFy");
+}
+
+}  // namespace
+}  // namespace sandpic

@@ -1,0 +1,307 @@
+#include "validate/calibrate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <mutex>
+
+#include <Eigen/Core>
+#include <tbb/parallel_for.h>
+#include <unsupported/Eigen/NonLinearOptimization>
+#include <unsupported/Eigen/NumericalDiff>
+
+#include "lattice/lattice_simulator.h"
+#include "src/errors.h"
+#include "src/falling_order.h"
+#include "src/init/init.h"
+#include "src/pipeline.h"
+#include "src/segment/segment.h"
+#include "validate/silhouette.h"
+
+namespace sandpic {
+namespace {
+
+// One calibration scene, prepared once: the lattice reruns only its
+// simulation, and the DEM piles' outlines are what it is fitted to.
+struct Target {
+  Scene scene;
+  Initialization init;
+  Segmentation seg;
+  FallingOrder order;
+  std::vector<std::vector<double>> dem;  // silhouette per DEM physics seed
+};
+
+// Classes with one diameter and density behave alike in the DEM: fitting
+// them apart would fit noise.
+std::vector<std::vector<int>> physics_groups(const Scene& s) {
+  std::vector<std::vector<int>> groups;
+  for (int k = 0; k < kClasses; ++k) {
+    auto same = [&](const std::vector<int>& g) {
+      return s.grains.diameter_mm[g[0]] == s.grains.diameter_mm[k] &&
+             s.grains.density_g_cm3[g[0]] == s.grains.density_g_cm3[k];
+    };
+    auto it = std::find_if(groups.begin(), groups.end(), same);
+    if (it == groups.end()) groups.push_back({k});
+    else it->push_back(k);
+  }
+  return groups;
+}
+
+struct Params {
+  std::vector<double> angle, runout;  // per group
+  double bulk = 1;
+};
+
+class Fit {
+ public:
+  Fit(std::vector<Target>& targets, std::vector<std::vector<int>> groups, Simulator& lattice)
+      : targets_(targets), groups_(std::move(groups)), lattice_(lattice) {
+    for (auto& t : targets_) residual_count_ += int(t.dem.size() * t.dem.front().size());
+  }
+  int residual_count() const { return residual_count_; }
+  int64_t runs() const { return runs_; }
+
+  // Lattice minus DEM column heights over the window height, every column
+  // of every scene against every DEM seed.
+  Eigen::VectorXd residuals(const Params& p) {
+    Eigen::VectorXd r(residual_count_);
+    int i = 0;
+    for (auto& t : targets_) {
+      Scene s = t.scene;
+      s.mode = Mode::Lattice;
+      apply(p, s);
+      Progress quiet(false);
+      SimResult out = lattice_.simulate(SimInput{s, t.init.grains, t.seg, t.order}, quiet);
+      ++runs_;
+      std::vector<double> h = silhouette(out.class_map);
+      for (auto& d : t.dem)
+        for (size_t c = 0; c < h.size(); ++c) r[i++] = (h[c] - d[c]) / s.window.height;
+    }
+    return r;
+  }
+  double error(const Params& p) { return residuals(p).cwiseAbs().mean(); }
+
+  void apply(const Params& p, Scene& s) const {
+    std::array<double, kClasses> deg{};
+    for (size_t g = 0; g < groups_.size(); ++g)
+      for (int k : groups_[g]) deg[size_t(k)] = p.angle[g], s.lattice.runout_px[size_t(k)] = p.runout[g];
+    s.lattice.repose_deg = deg;
+    s.lattice.bulk = p.bulk;
+  }
+
+ private:
+  std::vector<Target>& targets_;
+  std::vector<std::vector<int>> groups_;
+  Simulator& lattice_;
+  int residual_count_ = 0;
+  int64_t runs_ = 0;
+};
+
+// The angles as Eigen's Levenberg-Marquardt sees them; the lattice is
+// piecewise constant in an angle, so the forward differences take whole-degree
+// steps (epsfcn) and read the slope of the trend, not of one step.
+struct AngleFunctor {
+  using Scalar = double;
+  using InputType = Eigen::VectorXd;
+  using ValueType = Eigen::VectorXd;
+  using JacobianType = Eigen::MatrixXd;
+  enum { InputsAtCompileTime = Eigen::Dynamic, ValuesAtCompileTime = Eigen::Dynamic };
+  Fit* fit;
+  Params base;
+  int n_in, n_out;
+  int inputs() const { return n_in; }
+  int values() const { return n_out; }
+  int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& f) const {
+    Params p = base;
+    for (int g = 0; g < n_in; ++g) p.angle[size_t(g)] = std::clamp(x[g], 5.0, 70.0);
+    f = fit->residuals(p);
+    return 0;
+  }
+};
+
+Params fit_angles(Fit& fit, Params p) {
+  // LM only refines: a coarse scan of one shift for every group first finds
+  // the basin (the error falls over 10° and more on the default scene).
+  Params start = p;
+  double best = fit.error(p);
+  for (double shift = -10; shift <= 25; shift += 2.5) {
+    Params q = p;
+    for (double& a : q.angle) a = std::clamp(a + shift, 5.0, 70.0);
+    double e = fit.error(q);
+    if (e < best) best = e, start = q;
+  }
+  p = start;
+  AngleFunctor f{&fit, p, int(p.angle.size()), fit.residual_count()};
+  Eigen::NumericalDiff<AngleFunctor> nd(f, 0.05 * 0.05);  // h = sqrt(epsfcn)·|x|: 5%, 1.5° at 30°
+  Eigen::LevenbergMarquardt<Eigen::NumericalDiff<AngleFunctor>> lm(nd);
+  lm.parameters.maxfev = 60;
+  Eigen::VectorXd x(f.n_in);
+  for (int g = 0; g < f.n_in; ++g) x[g] = p.angle[size_t(g)];
+  lm.minimize(x);
+  Params out = p;
+  for (int g = 0; g < f.n_in; ++g) out.angle[size_t(g)] = std::clamp(x[g], 5.0, 70.0);
+  return fit.error(out) < fit.error(p) ? out : p;  // LM on a step function can wander: keep the better
+}
+
+// Area: the lattice's pile holds exactly the grains' area, so the ratio of
+// mean heights is the bulk that matches the DEM's looser packing.
+Params fit_bulk(Fit& fit, std::vector<Target>& targets, Params p) {
+  for (int round = 0; round < 2; ++round) {
+    double lat = 0, dem = 0;
+    Eigen::VectorXd r = fit.residuals(p);  // lattice − DEM
+    int i = 0;
+    for (auto& t : targets)
+      for (auto& d : t.dem)
+        for (double h : d) dem += h / t.scene.window.height, lat += h / t.scene.window.height + r[i++];
+    if (lat <= 0) break;
+    p.bulk = std::clamp(p.bulk * dem / lat, 0.25, 4.0);
+  }
+  return p;
+}
+
+Params fit_runout(Fit& fit, Params p) {
+  for (size_t g = 0; g < p.runout.size(); ++g) {
+    double best = fit.error(p), best_v = p.runout[g];
+    for (double v : {0.0, 1.0, 2.0, 3.0, 4.0, 6.0, 8.0}) {
+      Params q = p;
+      q.runout[g] = v;
+      double e = fit.error(q);
+      if (e < best) best = e, best_v = v;
+    }
+    p.runout[g] = best_v;
+  }
+  return p;
+}
+
+}  // namespace
+
+std::vector<Scene> calibration_scenes(const Scene& base, const CalibrateOptions& opt) {
+  if (opt.scenes < 1) throw InputError("--scenes must be at least 1");
+  if (opt.grains < 100) throw InputError("--grains must be at least 100");
+  const double base_grains = double(initialize(base).grains.size());
+  if (base_grains <= 0) throw InputError("the scene has no grains to calibrate on");
+  const TessellationKind kinds[] = {TessellationKind::Varying, TessellationKind::Uniform, TessellationKind::Strips};
+  std::vector<Scene> out;
+  for (int i = 0; i < opt.scenes; ++i) {
+    Scene s = base;
+    s.lattice.calibration.clear();
+    s.layout_seed = base.layout() + 1000 + uint64_t(i);
+    if (s.init.method == InitMethod::Tessellation) s.init.tessellation = kinds[i % 3];
+    const double scale = std::sqrt(double(opt.grains) / base_grains);
+    try {
+      if (std::abs(scale - 1) > 1e-9) apply_scale(s, scale);
+    } catch (const InputError& e) {
+      throw InputError("--grains " + std::to_string(opt.grains) + " does not fit this scene: " + e.what());
+    }
+    validate(s);
+    out.push_back(s);
+  }
+  return out;
+}
+
+Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const SimulatorFactory& make,
+                      const std::function<void(const std::string&)>& log) {
+  if (opt.physics_seeds.size() < 2) throw InputError("calibrate needs at least two physics seeds (--seeds)");
+  std::vector<Target> targets;
+  for (Scene& s : calibration_scenes(base, opt)) {
+    Target t;
+    t.scene = s;
+    t.init = initialize(s);
+    t.seg = segment(s, t.init.tessellation);
+    t.order = falling_order(t.seg, t.init.grains, s.layout());
+    t.dem.resize(opt.physics_seeds.size());
+    targets.push_back(std::move(t));
+  }
+  // The DEM runs, in parallel: each job its own simulator and scene copy.
+  const size_t per = opt.physics_seeds.size(), jobs = targets.size() * per;
+  std::vector<double> seconds(jobs);
+  std::vector<cv::Mat> maps(jobs);
+  std::mutex mu;
+  tbb::parallel_for(size_t(0), jobs, size_t(1), [&](size_t j) {
+    Scene s = targets[j / per].scene;
+    s.mode = Mode::Dem;
+    s.physics_seed = opt.physics_seeds[j % per];
+    auto dem = make(s);
+    RunResult r = run_pipeline(s, *dem, RunOptions{});
+    maps[j] = r.class_map;
+    seconds[j] = r.stats["timing"]["simulate_s"].get<double>();
+    std::lock_guard lock(mu);
+    log("DEM pile " + std::to_string(j + 1) + "/" + std::to_string(jobs) + ": " +
+        std::to_string(r.stats["grains"]["total"].get<int64_t>()) + " grains, " + std::to_string(seconds[j]) + " s");
+  });
+  Calibration c;
+  double floor_sum = 0;
+  int floor_n = 0;
+  for (size_t j = 0; j < jobs; ++j) {
+    targets[j / per].dem[j % per] = silhouette(maps[j]);
+    c.dem_s += seconds[j];
+  }
+  for (size_t t = 0; t < targets.size(); ++t) {
+    for (size_t a = 0; a < per; ++a)
+      for (size_t b = a + 1; b < per; ++b) floor_sum += silhouette_error(maps[t * per + a], maps[t * per + b]), ++floor_n;
+    const Scene& s = targets[t].scene;
+    c.scenes.push_back({{"layout_seed", s.layout()},
+                        {"tessellation", s.init.method == InitMethod::Halftone ? "halftone"
+                                         : s.init.tessellation == TessellationKind::Uniform ? "uniform"
+                                         : s.init.tessellation == TessellationKind::Strips  ? "strips"
+                                                                                            : "varying"},
+                        {"window", {s.window.width, s.window.height}},
+                        {"grains", int64_t(targets[t].init.grains.size())}});
+  }
+  c.noise_floor = floor_n ? floor_sum / floor_n : 0;
+
+  Scene lattice_scene = base;
+  lattice_scene.mode = Mode::Lattice;
+  auto lattice = make(lattice_scene);
+  c.groups = physics_groups(base);
+  Fit fit(targets, c.groups, *lattice);
+  Params p;
+  for (auto& g : c.groups) {
+    p.angle.push_back(repose_angle_deg(base, g[0]));
+    p.runout.push_back(base.lattice.runout_px[size_t(g[0])]);
+  }
+  p.bulk = base.lattice.bulk;
+  c.error_before = fit.error(p);
+  log("lattice before: silhouette error " + std::to_string(c.error_before) + " (DEM seed to seed " +
+      std::to_string(c.noise_floor) + ")");
+  // Bulk first (it sets the mean height), then shape: angles, run-out, and
+  // the angles again on the new run-out.
+  for (int round = 0; round < 2; ++round) {
+    p = fit_bulk(fit, targets, p);
+    p = fit_angles(fit, p);
+    p = fit_runout(fit, p);
+    log("round " + std::to_string(round + 1) + ": silhouette error " + std::to_string(fit.error(p)));
+  }
+  c.error_after = fit.error(p);
+  Scene applied = base;
+  fit.apply(p, applied);
+  c.repose_deg = *applied.lattice.repose_deg;
+  c.runout_px = applied.lattice.runout_px;
+  c.bulk = p.bulk;
+  c.lattice_runs = fit.runs();
+  return c;
+}
+
+ordered_json calibration_json(const Scene& base, const Calibration& c) {
+  ordered_json j;
+  j["description"] = "sandpic calibrate: lattice rule values fitted to DEM piles; name this file in lattice.calibration";
+  j["lattice"]["repose_deg"] = c.repose_deg;
+  j["lattice"]["runout_px"] = c.runout_px;
+  j["lattice"]["bulk"] = c.bulk;
+  ordered_json& f = j["fit"];
+  f["physics"] = {{"friction", base.physics.friction},
+                  {"restitution", base.physics.restitution},
+                  {"rolling_resistance", base.dem.rolling_resistance},
+                  {"water", base.dem.water},
+                  {"layers", base.dem.layers == Layers::Three ? "three" : base.dem.layers == Layers::Bcre ? "bcre" : "all-dynamic"}};
+  f["groups"] = c.groups;
+  f["scenes"] = c.scenes;
+  f["silhouette_error_before"] = c.error_before;
+  f["silhouette_error_after"] = c.error_after;
+  f["dem_noise_floor"] = c.noise_floor;
+  f["lattice_runs"] = c.lattice_runs;
+  f["dem_simulate_s"] = c.dem_s;
+  return j;
+}
+
+}  // namespace sandpic

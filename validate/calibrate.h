@@ -1,0 +1,49 @@
+#pragma once
+// Issue 4: the lattice's rule values fitted to DEM piles, so that a preview
+// predicts the final render. Fitted on variants of a scene (other layouts,
+// other tessellations, another size), never on the picture that is scored.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "src/scene_file.h"
+#include "src/simulator.h"
+
+namespace sandpic {
+
+using SimulatorFactory = std::function<std::unique_ptr<Simulator>(const Scene&)>;
+
+struct CalibrateOptions {
+  int64_t grains = 8000;                  // each calibration scene scaled to about this many grains
+  int scenes = 3;                         // variants of the scene (layout seed and tessellation)
+  std::vector<uint64_t> physics_seeds = {1, 2};  // DEM runs per variant
+};
+
+// The scenes the fit runs on: the scene's physics (friction, restitution,
+// water, grains) with layout seeds seed+1000+i and, for a tessellated scene,
+// the tessellation kinds varying / uniform / strips in turn.
+std::vector<Scene> calibration_scenes(const Scene& base, const CalibrateOptions& opt);
+
+struct Calibration {
+  std::array<double, kClasses> repose_deg{}, runout_px{};
+  double bulk = 1;
+  std::vector<std::vector<int>> groups;  // classes the DEM cannot tell apart share their values
+  double error_before = 0, error_after = 0;  // mean silhouette error, lattice vs each DEM run
+  double noise_floor = 0;                    // mean silhouette error between DEM seeds of one scene
+  int64_t lattice_runs = 0;
+  double dem_s = 0;  // simulate time of the DEM runs, summed
+  ordered_json scenes = ordered_json::array();
+};
+
+// `log` hears a line per step. DEM runs go in parallel (TBB), each its own
+// simulator; the result does not depend on the thread count.
+Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const SimulatorFactory& make,
+                      const std::function<void(const std::string&)>& log);
+
+// The file a scene names in lattice.calibration: {"lattice": {...}, "fit": {...}}.
+ordered_json calibration_json(const Scene& base, const Calibration& c);
+
+}  // namespace sandpic

@@ -1,0 +1,332 @@
+#include "validate/validation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <tbb/parallel_for.h>
+
+#include "lattice/lattice_simulator.h"
+#include "src/errors.h"
+#include "src/output.h"
+#include "src/pipeline.h"
+#include "validate/layer_bench.h"
+#include "validate/silhouette.h"
+
+namespace sandpic {
+namespace {
+
+struct Job {
+  std::string label, group, setting;
+  Scene scene;
+  std::string skipped;
+};
+
+std::string num(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+ordered_json finite(double v) { return std::isfinite(v) ? ordered_json(v) : ordered_json(nullptr); }
+
+// A DEM run is kept as runs/<label>.png + .json (its stats, with the scene
+// digest): rerunning validate with more seeds or a new lattice reuses it.
+bool load_cached(const std::string& dir, const Job& j, ValidationRun& r) {
+  if (dir.empty()) return false;
+  const std::string png = dir + "/" + j.label + ".png", js = dir + "/" + j.label + ".json";
+  std::ifstream in(js);
+  if (!in) return false;
+  std::stringstream text;
+  text << in.rdbuf();
+  ordered_json stats = ordered_json::parse(text.str(), nullptr, false);
+  if (stats.is_discarded() || stats.value("scene_digest", "") != scene_digest(j.scene)) return false;
+  cv::Mat img = cv::imread(png, cv::IMREAD_COLOR);
+  if (img.empty() || img.cols != j.scene.window.width || img.rows != j.scene.window.height) return false;
+  try {
+    r.picture = img;
+    r.simulate_s = stats.at("timing").at("simulate_s").get<double>();
+    r.grains = stats.at("grains").at("total").get<int64_t>();
+  } catch (const std::exception&) {
+    return false;
+  }
+  r.cached = true;
+  return true;
+}
+
+// A run's names, before it runs (and all of a skipped one).
+ValidationRun describe(const Job& j) {
+  ValidationRun r;
+  r.label = j.label, r.group = j.group, r.setting = j.setting, r.physics_seed = j.scene.physics_rng();
+  r.skipped = j.skipped;
+  return r;
+}
+
+ValidationRun run_job(const Job& j, const ValidateOptions& opt, const SimulatorFactory& make) {
+  ValidationRun r = describe(j);
+  if (!r.skipped.empty()) return r;
+  if (load_cached(opt.cache_dir, j, r)) return r;
+  auto sim = make(j.scene);
+  RunResult out = run_pipeline(j.scene, *sim, RunOptions{});
+  r.picture = out.picture;
+  r.simulate_s = out.stats["timing"]["simulate_s"].get<double>();
+  r.grains = out.stats["grains"]["total"].get<int64_t>();
+  if (!opt.cache_dir.empty()) {
+    write_atomic(opt.cache_dir + "/" + j.label + ".png",
+                 std::string_view(reinterpret_cast<const char*>(out.png.data()), out.png.size()));
+    write_atomic(opt.cache_dir + "/" + j.label + ".json", out.stats.dump(2) + "\n");
+  }
+  return r;
+}
+
+// The lattice is timed as the median of several runs: one takes milliseconds.
+ValidationRun run_lattice(const Job& j, const ValidateOptions& opt, const SimulatorFactory& make) {
+  ValidationRun r = describe(j);
+  if (!r.skipped.empty()) return r;
+  auto sim = make(j.scene);
+  std::vector<double> t;
+  for (int i = 0; i < std::max(1, opt.lattice_timing_runs); ++i) {
+    RunResult out;
+    try {
+      out = run_pipeline(j.scene, *sim, RunOptions{});
+    } catch (const InputError& e) {
+      if (j.group == "lattice") throw;
+      r.skipped = e.what();  // a sweep value this scene cannot take (a grid too fine)
+      return r;
+    }
+    if (i == 0) r.picture = out.picture, r.grains = out.stats["grains"]["total"].get<int64_t>();
+    t.push_back(out.stats["timing"]["simulate_s"].get<double>());
+  }
+  r.simulate_s = median(t);
+  return r;
+}
+
+std::string g(double v) { return num("%g", v); }
+
+std::vector<Job> lattice_sweep(const Scene& lat) {
+  // Around the values the lattice really uses (a calibration's, if named).
+  Scene eff = with_calibration(lat);
+  eff.lattice.calibration.clear();
+  std::array<double, kClasses> deg;
+  for (int k = 0; k < kClasses; ++k) deg[size_t(k)] = repose_angle_deg(eff, k);
+  std::vector<Job> jobs;
+  auto add = [&](const std::string& setting, auto change) {
+    Job j{"sweep-" + setting, "sweep-lattice", setting, eff, ""};
+    change(j.scene);
+    jobs.push_back(j);
+  };
+  for (double f : {0.5, 2.0})
+    add("lattice.resolution=" + g(eff.lattice.resolution * f), [&](Scene& s) { s.lattice.resolution *= f; });
+  for (double d : {-5.0, 5.0})
+    add("lattice.repose_deg" + std::string(d > 0 ? "+" : "") + g(d), [&](Scene& s) {
+      std::array<double, kClasses> a = deg;
+      for (double& x : a) x = std::clamp(x + d, 1.0, 75.0);
+      s.lattice.repose_deg = a;
+    });
+  add("lattice.runout_px=0", [](Scene& s) { s.lattice.runout_px.fill(0); });
+  add("lattice.runout_px*2+2", [](Scene& s) {
+    for (double& r : s.lattice.runout_px) r = r * 2 + 2;
+  });
+  for (double f : {0.95, 1.05})
+    add("lattice.bulk=" + g(eff.lattice.bulk * f), [&](Scene& s) { s.lattice.bulk *= f; });
+  return jobs;
+}
+
+std::vector<Job> dem_sweep(const Scene& dem, int64_t grains, const ValidateOptions& opt) {
+  std::vector<Job> jobs;
+  auto add = [&](const std::string& setting, auto change) {
+    Job j{"sweep-" + setting, "sweep-dem", setting, dem, ""};
+    change(j.scene);
+    jobs.push_back(j);
+  };
+  for (double f : {2.0, 0.5})
+    add("dem.step_diameters=" + g(dem.dem.step_diameters * f), [&](Scene& s) { s.dem.step_diameters *= f; });
+  for (int n : {std::max(1, dem.dem.solver_iterations / 2), dem.dem.solver_iterations * 2})
+    add("dem.solver_iterations=" + std::to_string(n), [&](Scene& s) { s.dem.solver_iterations = n; });
+  for (double f : {0.5, 2.0})
+    add("dem.release_rate=" + g(dem.dem.release_rate * f), [&](Scene& s) { s.dem.release_rate *= f; });
+  for (double f : {0.5, 2.0})
+    add("dem.static_thickness_mm=" + g(dem.dem.static_thickness_mm * f),
+        [&](Scene& s) { s.dem.static_thickness_mm *= f; });
+  for (Layers l : {Layers::Three, Layers::Bcre, Layers::AllDynamic}) {
+    if (l == dem.dem.layers) continue;
+    add("dem.layers=" + layers_name(l), [&](Scene& s) { s.dem.layers = l; });
+    if (l == Layers::AllDynamic && grains > opt.all_dynamic_max)
+      jobs.back().skipped = "all-dynamic skipped: " + std::to_string(grains) + " grains is above --all-dynamic-max " +
+                            std::to_string(opt.all_dynamic_max) + " (its time grows about as grains²)";
+  }
+  return jobs;
+}
+
+cv::Mat heat_map(const cv::Mat& a, const cv::Mat& b, const Scene& s, double sigma) {
+  cv::Mat la = luminance601(a), lb = luminance601(b), d;
+  if (sigma > 0) {
+    cv::GaussianBlur(la, la, cv::Size(), sigma, sigma, cv::BORDER_REFLECT);
+    cv::GaussianBlur(lb, lb, cv::Size(), sigma, sigma, cv::BORDER_REFLECT);
+  }
+  cv::absdiff(la, lb, d);
+  cv::Mat d8, heat;
+  d.convertTo(d8, CV_8U, 4.0);  // a difference of 64 in luminance is full scale
+  cv::applyColorMap(d8, heat, cv::COLORMAP_INFERNO);
+  // The two piles' outlines: lattice white, DEM cyan.
+  auto outline = [&](const cv::Mat& pic, cv::Scalar colour) {
+    std::vector<double> h = silhouette(decode_classes(pic, s.grains.colors));
+    std::vector<cv::Point> line;
+    for (size_t x = 0; x < h.size(); ++x) line.emplace_back(int(x), int(pic.rows - h[x]));
+    cv::polylines(heat, line, false, colour, 1);
+  };
+  outline(b, cv::Scalar(255, 255, 0));
+  outline(a, cv::Scalar(255, 255, 255));
+  return heat;
+}
+
+}  // namespace
+
+Comparison mean_comparison(const std::vector<Comparison>& all) {
+  Comparison m;
+  if (all.empty()) return m;
+  m.width = all[0].width, m.height = all[0].height, m.blur_sigma_px = all[0].blur_sigma_px;
+  m.composition.assign(all[0].composition.size(), 0);
+  double mse = 0;
+  for (const Comparison& c : all) {
+    m.ssim += c.ssim / all.size();
+    m.silhouette_error += c.silhouette_error / all.size();
+    m.composition_error += c.composition_error / all.size();
+    m.ssim_blurred += c.ssim_blurred / all.size();
+    for (size_t b = 0; b < m.composition.size() && b < c.composition.size(); ++b)
+      m.composition[b] += c.composition[b] / all.size();
+    mse += (std::isfinite(c.psnr_db) ? 255.0 * 255.0 * std::pow(10.0, -c.psnr_db / 10) : 0.0) / all.size();
+  }
+  m.psnr_db = mse > 0 ? 10 * std::log10(255.0 * 255.0 / mse) : INFINITY;
+  return m;
+}
+
+Validation run_validation(const Scene& base, const ValidateOptions& opt, const SimulatorFactory& make,
+                          const std::function<void(const std::string&)>& log) {
+  if (opt.extra_seeds < 4)
+    throw InputError("--seeds must be at least 4: the noise floor is the mean over five or more DEM runs");
+  Validation v;
+  v.scene = base;
+  Scene lat = base, dem = base;
+  lat.mode = Mode::Lattice;
+  dem.mode = Mode::Dem;
+  dem.lattice.calibration.clear();
+  const uint64_t seed0 = base.physics_rng();
+  dem.physics_seed = seed0;
+  make(dem);  // a build without Bullet says so before any work
+
+  // The DEM jobs: the ensemble, then the DEM sweep. The lattice's grain
+  // count (the same scene) decides whether all-dynamic is affordable.
+  v.lattice = run_lattice(Job{"lattice", "lattice", "", lat, ""}, opt, make);
+  log("lattice: " + std::to_string(v.lattice.grains) + " grains, " + num("%.4f", v.lattice.simulate_s) + " s");
+  std::vector<Job> jobs;
+  for (int i = 0; i <= opt.extra_seeds; ++i) {
+    Job j{"dem-seed-" + std::to_string(seed0 + uint64_t(i)), "dem", "", dem, ""};
+    j.scene.physics_seed = seed0 + uint64_t(i);
+    jobs.push_back(j);
+  }
+  const size_t ensemble = jobs.size();
+  if (opt.sweep_dem)
+    for (Job& j : dem_sweep(dem, v.lattice.grains, opt)) jobs.push_back(j);
+  std::vector<ValidationRun> done(jobs.size());
+  std::mutex mu;
+  size_t finished = 0;
+  tbb::parallel_for(size_t(0), jobs.size(), size_t(1), [&](size_t i) {
+    done[i] = run_job(jobs[i], opt, make);
+    std::lock_guard lock(mu);
+    ++finished;
+    log("DEM " + std::to_string(finished) + "/" + std::to_string(jobs.size()) + " " + jobs[i].label + ": " +
+        (done[i].skipped.empty() ? num("%.2f s", done[i].simulate_s) + (done[i].cached ? " (kept from an earlier run)" : "")
+                                 : done[i].skipped));
+  });
+  v.dem.assign(done.begin(), done.begin() + long(ensemble));
+  for (size_t i = ensemble; i < done.size(); ++i) v.sweep.push_back(done[i]);
+  if (opt.sweep_lattice)
+    for (Job& j : lattice_sweep(lat)) v.sweep.push_back(run_lattice(j, opt, make));
+
+  // Every comparison is against every DEM run of the ensemble.
+  const auto& colours = base.grains.colors;
+  auto against_dem = [&](ValidationRun& r) {
+    if (!r.skipped.empty()) return;
+    std::vector<Comparison> c;
+    for (auto& d : v.dem) c.push_back(compare_pictures(r.picture, d.picture, colours, opt.bands, opt.blur_sigma_px));
+    r.mean = mean_comparison(c);
+  };
+  against_dem(v.lattice);
+  for (auto& r : v.sweep) against_dem(r);
+  std::vector<Comparison> pairs;
+  for (size_t a = 0; a < v.dem.size(); ++a)
+    for (size_t b = a + 1; b < v.dem.size(); ++b)
+      pairs.push_back(compare_pictures(v.dem[a].picture, v.dem[b].picture, colours, opt.bands, opt.blur_sigma_px));
+  const Comparison floor = mean_comparison(pairs), &l = v.lattice.mean;
+  auto ratio = [](double a, double b) { return b > 0 ? a / b : a > 0 ? INFINITY : 1.0; };
+  v.metrics = {
+      {"silhouette_error", l.silhouette_error, floor.silhouette_error, ratio(l.silhouette_error, floor.silhouette_error)},
+      {"composition_error", l.composition_error, floor.composition_error,
+       ratio(l.composition_error, floor.composition_error)},
+      {"ssim", l.ssim, floor.ssim, ratio(1 - l.ssim, 1 - floor.ssim)},
+      {"ssim_blurred", l.ssim_blurred, floor.ssim_blurred, ratio(1 - l.ssim_blurred, 1 - floor.ssim_blurred)},
+      {"psnr_db", l.psnr_db, floor.psnr_db,
+       std::isfinite(floor.psnr_db) ? std::pow(10.0, (floor.psnr_db - l.psnr_db) / 10) : INFINITY},
+  };
+  std::vector<double> dem_t;
+  int cached = 0;
+  for (auto& d : v.dem) dem_t.push_back(d.simulate_s), cached += d.cached;
+  v.dem_s = median(dem_t);
+  v.lattice_s = v.lattice.simulate_s;
+  v.time_ratio = v.lattice_s > 0 ? v.dem_s / v.lattice_s : INFINITY;
+  v.heat_map = heat_map(v.lattice.picture, v.dem[0].picture, base, opt.blur_sigma_px);
+  if (cached)
+    v.notes.push_back(std::to_string(cached) + " of " + std::to_string(v.dem.size()) +
+                      " DEM runs were kept from an earlier run in this folder (same scene digest); their times are "
+                      "those of that run");
+  v.notes.push_back("DEM runs go in parallel (one per core), so their times include sharing the machine");
+  for (auto& r : v.sweep)
+    if (!r.skipped.empty()) v.notes.push_back(r.setting + ": " + r.skipped);
+  return v;
+}
+
+ordered_json validation_json(const Validation& v, const std::string& reproduce) {
+  ordered_json j;
+  j["reproduce"] = reproduce;
+  j["scene_digest"] = scene_digest(v.scene);
+  j["window"] = {v.scene.window.width, v.scene.window.height};
+  j["grains"] = v.lattice.grains;
+  ordered_json& h = j["headline"];
+  for (const MetricRow& m : v.metrics) h[m.name + "_ratio"] = finite(m.ratio);
+  h["time_ratio"] = finite(v.time_ratio);
+  h["lattice_simulate_s"] = v.lattice_s;
+  h["dem_simulate_s"] = v.dem_s;
+  j["metrics"] = ordered_json::array();
+  for (const MetricRow& m : v.metrics)
+    j["metrics"].push_back({{"name", m.name}, {"lattice", finite(m.lattice)}, {"noise_floor", finite(m.floor)},
+                            {"ratio", finite(m.ratio)}});
+  j["metrics_note"] = "ratio: lattice-vs-DEM error over DEM-vs-DEM error (1 - SSIM for the SSIMs, MSE for PSNR)";
+  auto run = [](const ValidationRun& r) {
+    ordered_json o = {{"label", r.label},   {"group", r.group},           {"setting", r.setting},
+                      {"physics_seed", r.physics_seed}, {"simulate_s", finite(r.simulate_s)}, {"cached", r.cached}};
+    if (!r.skipped.empty()) o["skipped"] = r.skipped;
+    if (r.skipped.empty() && r.mean.width > 0) {
+      o["silhouette_error"] = r.mean.silhouette_error;
+      o["composition_error"] = r.mean.composition_error;
+      o["ssim"] = r.mean.ssim;
+      o["ssim_blurred"] = r.mean.ssim_blurred;
+      o["psnr_db"] = finite(r.mean.psnr_db);
+    }
+    return o;
+  };
+  j["runs"] = ordered_json::array();
+  j["runs"].push_back(run(v.lattice));
+  for (auto& d : v.dem) j["runs"].push_back(run(d));
+  j["sweep"] = ordered_json::array();
+  for (auto& s : v.sweep) j["sweep"].push_back(run(s));
+  j["notes"] = v.notes;
+  return j;
+}
+
+}  // namespace sandpic
