@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "src/errors.h"
 
@@ -20,6 +22,14 @@ std::string folder_of(const std::string& path) {
   return p.has_parent_path() ? p.parent_path().string() : ".";
 }
 }  // namespace
+
+std::optional<std::string> read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::stringstream buf;
+  buf << in.rdbuf();
+  return buf.str();
+}
 
 void check_writable(const std::string& path) {
   if (path.empty()) throw InputError("an output path is empty");

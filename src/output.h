@@ -2,6 +2,7 @@
 // Output files are written whole or not at all: to a temporary file beside
 // the target, then renamed over it, so a failure never leaves a partial file
 // nor touches an existing one.
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -11,5 +12,7 @@ namespace sandpic {
 void check_writable(const std::string& path);
 void check_folder(const std::string& dir);  // creates it if missing
 void write_atomic(const std::string& path, std::string_view bytes);
+// A whole file's bytes; nullopt if it cannot be read.
+std::optional<std::string> read_text(const std::string& path);
 
 }  // namespace sandpic

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "src/errors.h"
+#include "src/output.h"
 
 namespace sandpic {
 namespace {
@@ -100,11 +101,9 @@ void apply_json(Scene& s, const json& doc) {
 }
 
 Scene load_scene(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read scene file '" + path + "'");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  std::string text = buf.str();
+  const std::optional<std::string> read = read_text(path);
+  if (!read) throw InputError("cannot read scene file '" + path + "'");
+  const std::string& text = *read;
   json doc;
   try {
     doc = json::parse(text);
@@ -176,11 +175,9 @@ std::string scene_digest(const Scene& s) {
 Scene with_calibration(const Scene& s) {
   if (s.lattice.calibration.empty()) return s;
   const std::string path = s.resolve(s.lattice.calibration);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw key_error("lattice.calibration", "cannot read '" + path + "'");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  json doc = json::parse(buf.str(), nullptr, false);
+  const std::optional<std::string> text = read_text(path);
+  if (!text) throw key_error("lattice.calibration", "cannot read '" + path + "'");
+  json doc = json::parse(*text, nullptr, false);
   if (doc.is_discarded() || !doc.is_object() || !doc.contains("lattice") || !doc["lattice"].is_object())
     throw key_error("lattice.calibration", "'" + path + "' is not a calibration (JSON with a \"lattice\" object)");
   json part = json::object();

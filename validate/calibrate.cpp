@@ -16,6 +16,7 @@
 #include "src/init/init.h"
 #include "src/pipeline.h"
 #include "src/segment/segment.h"
+#include "validate/layer_bench.h"
 #include "validate/silhouette.h"
 
 namespace sandpic {
@@ -140,7 +141,7 @@ Params fit_angles(Fit& fit, Params p) {
   lm.minimize(x);
   Params out = p;
   for (int g = 0; g < f.n_in; ++g) out.angle[size_t(g)] = std::clamp(x[g], 5.0, 70.0);
-  return fit.error(out) < fit.error(p) ? out : p;  // LM on a step function can wander: keep the better
+  return fit.error(out) < best ? out : p;  // LM on a step function can wander: keep the better
 }
 
 // Area: the lattice's pile holds exactly the grains' area, so the ratio of
@@ -240,11 +241,9 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
     for (size_t a = 0; a < per; ++a)
       for (size_t b = a + 1; b < per; ++b) floor_sum += silhouette_error(maps[t * per + a], maps[t * per + b]), ++floor_n;
     const Scene& s = targets[t].scene;
+    const ordered_json init = to_json(s)["init"];  // the scene file's names
     c.scenes.push_back({{"layout_seed", s.layout()},
-                        {"tessellation", s.init.method == InitMethod::Halftone ? "halftone"
-                                         : s.init.tessellation == TessellationKind::Uniform ? "uniform"
-                                         : s.init.tessellation == TessellationKind::Strips  ? "strips"
-                                                                                            : "varying"},
+                        {"tessellation", s.init.method == InitMethod::Halftone ? init["method"] : init["tessellation"]},
                         {"window", {s.window.width, s.window.height}},
                         {"grains", int64_t(targets[t].init.grains.size())}});
   }
@@ -293,7 +292,7 @@ ordered_json calibration_json(const Scene& base, const Calibration& c) {
                   {"restitution", base.physics.restitution},
                   {"rolling_resistance", base.dem.rolling_resistance},
                   {"water", base.dem.water},
-                  {"layers", base.dem.layers == Layers::Three ? "three" : base.dem.layers == Layers::Bcre ? "bcre" : "all-dynamic"}};
+                  {"layers", layers_name(base.dem.layers)}};
   f["groups"] = c.groups;
   f["scenes"] = c.scenes;
   f["silhouette_error_before"] = c.error_before;

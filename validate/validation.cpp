@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
-#include <sstream>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -40,11 +38,9 @@ ordered_json finite(double v) { return std::isfinite(v) ? ordered_json(v) : orde
 bool load_cached(const std::string& dir, const Job& j, ValidationRun& r) {
   if (dir.empty()) return false;
   const std::string png = dir + "/" + j.label + ".png", js = dir + "/" + j.label + ".json";
-  std::ifstream in(js);
-  if (!in) return false;
-  std::stringstream text;
-  text << in.rdbuf();
-  ordered_json stats = ordered_json::parse(text.str(), nullptr, false);
+  const std::optional<std::string> text = read_text(js);
+  if (!text) return false;
+  ordered_json stats = ordered_json::parse(*text, nullptr, false);
   if (stats.is_discarded() || stats.value("scene_digest", "") != scene_digest(j.scene)) return false;
   cv::Mat img = cv::imread(png, cv::IMREAD_COLOR);
   if (img.empty() || img.cols != j.scene.window.width || img.rows != j.scene.window.height) return false;
@@ -108,6 +104,14 @@ ValidationRun run_lattice(const Job& j, const ValidateOptions& opt, const Simula
 
 std::string g(double v) { return num("%g", v); }
 
+// A sweep point: `base` with one setting changed by `change`.
+template <class Change>
+void add_sweep(std::vector<Job>& jobs, const char* group, const Scene& base, const std::string& setting, Change change) {
+  Job j{"sweep-" + setting, group, setting, base, ""};
+  change(j.scene);
+  jobs.push_back(j);
+}
+
 std::vector<Job> lattice_sweep(const Scene& lat) {
   // Around the values the lattice really uses (a calibration's, if named).
   Scene eff = with_calibration(lat);
@@ -115,11 +119,7 @@ std::vector<Job> lattice_sweep(const Scene& lat) {
   std::array<double, kClasses> deg;
   for (int k = 0; k < kClasses; ++k) deg[size_t(k)] = repose_angle_deg(eff, k);
   std::vector<Job> jobs;
-  auto add = [&](const std::string& setting, auto change) {
-    Job j{"sweep-" + setting, "sweep-lattice", setting, eff, ""};
-    change(j.scene);
-    jobs.push_back(j);
-  };
+  auto add = [&](const std::string& setting, auto change) { add_sweep(jobs, "sweep-lattice", eff, setting, change); };
   for (double f : {0.5, 2.0})
     add("lattice.resolution=" + g(eff.lattice.resolution * f), [&](Scene& s) { s.lattice.resolution *= f; });
   for (double d : {-5.0, 5.0})
@@ -139,11 +139,7 @@ std::vector<Job> lattice_sweep(const Scene& lat) {
 
 std::vector<Job> dem_sweep(const Scene& dem, int64_t grains, const ValidateOptions& opt) {
   std::vector<Job> jobs;
-  auto add = [&](const std::string& setting, auto change) {
-    Job j{"sweep-" + setting, "sweep-dem", setting, dem, ""};
-    change(j.scene);
-    jobs.push_back(j);
-  };
+  auto add = [&](const std::string& setting, auto change) { add_sweep(jobs, "sweep-dem", dem, setting, change); };
   for (double f : {2.0, 0.5})
     add("dem.step_diameters=" + g(dem.dem.step_diameters * f), [&](Scene& s) { s.dem.step_diameters *= f; });
   for (int n : {std::max(1, dem.dem.solver_iterations / 2), dem.dem.solver_iterations * 2})
@@ -206,10 +202,14 @@ Comparison mean_comparison(const std::vector<Comparison>& all) {
   return m;
 }
 
-Validation run_validation(const Scene& base, const ValidateOptions& opt, const SimulatorFactory& make,
-                          const std::function<void(const std::string&)>& log) {
+void check_options(const ValidateOptions& opt) {
   if (opt.extra_seeds < 4)
     throw InputError("--seeds must be at least 4: the noise floor is the mean over five or more DEM runs");
+}
+
+Validation run_validation(const Scene& base, const ValidateOptions& opt, const SimulatorFactory& make,
+                          const std::function<void(const std::string&)>& log) {
+  check_options(opt);
   Validation v;
   v.scene = base;
   Scene lat = base, dem = base;
@@ -218,7 +218,6 @@ Validation run_validation(const Scene& base, const ValidateOptions& opt, const S
   dem.lattice.calibration.clear();
   const uint64_t seed0 = base.physics_rng();
   dem.physics_seed = seed0;
-  make(dem);  // a build without Bullet says so before any work
 
   // The DEM jobs: the ensemble, then the DEM sweep. The lattice's grain
   // count (the same scene) decides whether all-dynamic is affordable.

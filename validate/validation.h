@@ -58,6 +58,10 @@ struct Validation {
   std::vector<std::string> notes;
 };
 
+// Throws InputError for options no run can take (fewer than five DEM runs).
+void check_options(const ValidateOptions& opt);
+// Checks the options first; a build without Bullet fails at the first DEM run
+// (the CLI says so before any work).
 Validation run_validation(const Scene& base, const ValidateOptions& opt, const SimulatorFactory& make,
                           const std::function<void(const std::string&)>& log);
 

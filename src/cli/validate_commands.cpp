@@ -65,11 +65,16 @@ struct ValidateCommand {
     Scene s = scene.build();
     ValidateOptions opt;
     opt.extra_seeds = seeds;
-    if (seeds < 4) throw InputError("--seeds must be at least 4: the noise floor needs five or more DEM runs");
-    opt.sweep_lattice = sweep == "lattice" || sweep == "lattice,dem" || sweep == "dem,lattice" || sweep == "both";
-    opt.sweep_dem = sweep == "dem" || sweep == "lattice,dem" || sweep == "dem,lattice" || sweep == "both";
-    if (!opt.sweep_lattice && !opt.sweep_dem && sweep != "none")
-      throw InputError("--sweep: '" + sweep + "' is not one of lattice, dem, lattice,dem, both, none");
+    check_options(opt);  // before the folder is made
+    opt.sweep_lattice = opt.sweep_dem = false;
+    for (const std::string& item : list_option<std::string>("--sweep", sweep, [this](const std::string& i) {
+           if (i != "lattice" && i != "dem" && i != "both" && i != "none")
+             throw InputError("--sweep: '" + sweep + "' is not one of lattice, dem, lattice,dem, both, none");
+           return i;
+         })) {
+      opt.sweep_lattice |= item == "lattice" || item == "both";
+      opt.sweep_dem |= item == "dem" || item == "both";
+    }
     opt.all_dynamic_max = all_dynamic_max;
     opt.bands = bands;
     opt.blur_sigma_px = blur;
