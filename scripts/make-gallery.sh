@@ -13,3 +13,8 @@ done
 for mu in 0.1 0.4 0.9; do
   "$BIN" render examples/three-mountains.json -o "$OUT/friction-$mu.png" --scale 0.5 --set physics.friction=$mu
 done
+"$BIN" render examples/fig07.json -o "$OUT/fig07-plain.png" --set segment.sketch.narrow=false
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+"$BIN" render examples/fig07.json -o "$TMP/fig07.png" --stages "$TMP"
+cp "$TMP/3-segmentation.png" "$OUT/stages/fig07-segmentation.png"

@@ -15,6 +15,7 @@ enum class Stream : uint64_t {
   GrainTies,         // paper §6: equal distances to the outlet
   OutletJitter,      // release point across the outlet (physics seed)
   LatticeSlide,      // lattice: left/right ties (physics seed)
+  Sketch,            // paper §5.2: eccentricities and narrow-ellipse angles per crossing
 };
 
 inline uint64_t mix64(uint64_t z) {  // splitmix64 finaliser

@@ -18,9 +18,12 @@ struct Rgb {
 
 enum class InitMethod { Tessellation, Halftone };
 enum class TessellationKind { Uniform, Varying, Strips };
-enum class SegmentMethod { Ellipses, Explicit, Cells };
+enum class SegmentMethod { Ellipses, Explicit, Cells, Sketch };
 enum class Mode { Lattice, Dem };
 enum class Layers { Three, Bcre, AllDynamic };  // paper §8: layer models of the DEM mode
+
+// A line drawn in the window, in px (x right, y down), as its corner points.
+using Polyline = std::vector<std::array<double, 2>>;
 
 // An ellipse of the segmentation, in window pixels (x right, y down).
 struct EllipseSpec {
@@ -73,6 +76,18 @@ struct Scene {
     double semi_major_min = 45, semi_major_max = 150;  // top row, bottom row
     double eccentricity_min = 0.45, eccentricity_max = 0.65;
     std::vector<EllipseSpec> ellipses;  // method=explicit
+    // paper §5.2, Fig. 7-8: method=sketch places an ellipse under every
+    // crossing of an arc-like curve with a ridge line.
+    struct Sketch {
+      std::vector<Polyline> ridges, arcs;  // window px; or, instead, an image:
+      std::string image;                   // strokes of two colours over the region (Fig. 2f)
+      Rgb ridge_color{220, 30, 30}, arc_color{30, 160, 60};
+      double shrink_per_px = 0.3;      // paper's α: a_i = 0.5 A_m - α P_i(y)
+      double semi_major_floor = 12;    // px: a_i never below this (high crossings)
+      double bottom_band = 0.25;       // A_m counts the ridges reaching this share of the region's bottom
+      bool narrow = true;              // insert the long narrow ellipses (Fig. 7c)
+      double narrow_spacing = 1.2;     // ... where crossings along a ridge are farther apart than this x b
+    } sketch;
   } segment;
   struct Order {
     double row_tolerance = 20;  // px: centres this close in y share a row (§6)

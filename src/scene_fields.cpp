@@ -180,6 +180,47 @@ std::vector<T> list_of(const json& v, const std::string& path,
   return out;
 }
 
+// Lines of a sketch: [[[x, y], [x, y], ...], ...], at least two points each.
+template <class Acc>
+Field polylines(std::string path, Acc acc, std::string help) {
+  return {path, help, true,
+          [acc](const Scene& s) {
+            ordered_json out = ordered_json::array();
+            for (const Polyline& line : acc(const_cast<Scene&>(s))) {
+              ordered_json pts = ordered_json::array();
+              for (const auto& p : line) pts.push_back({p[0], p[1]});
+              out.push_back(pts);
+            }
+            return out;
+          },
+          [acc, path](Scene& s, const json& v) {
+            if (!v.is_array()) throw key_error(path, std::string("expected an array of lines, got ") + v.type_name());
+            std::vector<Polyline> lines;
+            for (size_t i = 0; i < v.size(); ++i) {
+              const std::string p = path + "[" + std::to_string(i) + "]";
+              if (!v[i].is_array() || v[i].size() < 2)
+                throw key_error(p, "expected a line of at least two [x, y] points, got " + shown(v[i]));
+              Polyline line;
+              for (size_t j = 0; j < v[i].size(); ++j) {
+                const std::string q = p + "[" + std::to_string(j) + "]";
+                element(v[i][j], q, 2);
+                line.push_back({in_range(v[i][j][0], q + "[0]", -1e6, 1e6), in_range(v[i][j][1], q + "[1]", -1e6, 1e6)});
+              }
+              lines.push_back(std::move(line));
+            }
+            acc(s) = std::move(lines);
+          }};
+}
+
+template <class Acc>
+Field boolean(std::string path, Acc acc, std::string help) {
+  return {path, help, false, [acc](const Scene& s) { return ordered_json(acc(const_cast<Scene&>(s))); },
+          [acc, path](Scene& s, const json& v) {
+            if (!v.is_boolean()) throw key_error(path, std::string("expected true or false, got ") + shown(v));
+            acc(s) = v.get<bool>();
+          }};
+}
+
 Field ellipses_field() {
   using Setter = std::function<void(EllipseSpec&, const json&, const std::string&)>;
   std::vector<std::pair<std::string, Setter>> keys = {
@@ -301,8 +342,10 @@ std::vector<Field> make_fields() {
       choice<SegmentMethod>("segment.method", [](S& s) -> auto& { return s.segment.method; },
                             {{"ellipses", SegmentMethod::Ellipses},
                              {"explicit", SegmentMethod::Explicit},
-                             {"cells", SegmentMethod::Cells}},
-                            "falling units: automatic ellipses (§5.1), listed ellipses, or the cells (Fig. 4b, 5b)"),
+                             {"cells", SegmentMethod::Cells},
+                             {"sketch", SegmentMethod::Sketch}},
+                            "falling units: automatic ellipses (§5.1), listed ellipses, the cells (Fig. 4b, 5b), "
+                            "or ellipses under a sketch's crossings (§5.2)"),
       real("segment.semi_major_min", [](S& s) -> double& { return s.segment.semi_major_min; }, 1, 1e5,
            "semi-major axis of the top row of ellipses, px", true),
       real("segment.semi_major_max", [](S& s) -> double& { return s.segment.semi_major_max; }, 1, 1e5,
@@ -312,6 +355,26 @@ std::vector<Field> make_fields() {
       real("segment.eccentricity_max", [](S& s) -> double& { return s.segment.eccentricity_max; }, 0, 0.999,
            "largest ellipse eccentricity"),
       ellipses_field(),
+      polylines("segment.sketch.ridges", [](S& s) -> auto& { return s.segment.sketch.ridges; },
+                "sketch (§5.2): ridge lines, each [[x, y], ...] in window px (y down)"),
+      polylines("segment.sketch.arcs", [](S& s) -> auto& { return s.segment.sketch.arcs; },
+                "sketch (§5.2): arc-like curves across the ridge lines, each [[x, y], ...] in window px"),
+      text("segment.sketch.image", [](S& s) -> auto& { return s.segment.sketch.image; },
+           "sketch as a picture of the region instead: ridge and arc strokes in the two colours below"),
+      colour("segment.sketch.ridge_color", [](S& s) -> auto& { return s.segment.sketch.ridge_color; },
+             "stroke colour of the ridge lines in segment.sketch.image"),
+      colour("segment.sketch.arc_color", [](S& s) -> auto& { return s.segment.sketch.arc_color; },
+             "stroke colour of the arc-like curves in segment.sketch.image"),
+      real("segment.sketch.shrink_per_px", [](S& s) -> double& { return s.segment.sketch.shrink_per_px; }, 0, 10,
+           "§5.2's α: semi-major axis a_i = 0.5 A_m - α P_i(y), P_i(y) the crossing's height above the region's bottom"),
+      real("segment.sketch.semi_major_floor", [](S& s) -> double& { return s.segment.sketch.semi_major_floor; }, 1, 1e5,
+           "smallest semi-major axis of a sketch ellipse, px (high crossings)", true),
+      real("segment.sketch.bottom_band", [](S& s) -> double& { return s.segment.sketch.bottom_band; }, 0.01, 1,
+           "A_m = region width / ridge lines reaching this share of the region above its bottom"),
+      boolean("segment.sketch.narrow", [](S& s) -> auto& { return s.segment.sketch.narrow; },
+              "§5.2, Fig. 7c: insert two long narrow ellipses on top of an ellipse whose next crossing up its ridge is far"),
+      real("segment.sketch.narrow_spacing", [](S& s) -> double& { return s.segment.sketch.narrow_spacing; }, 0, 100,
+           "§5.2: far means farther than this times the lower ellipse's semi-minor axis"),
       real("order.row_tolerance", [](S& s) -> double& { return s.order.row_tolerance; }, 0, 1e5,
            "units whose centres differ by at most this in y form one row (§6), px", true),
       real("release.outlet_width_mm", [](S& s) -> double& { return s.release.outlet_width_mm; }, 0, 1e4,

@@ -214,6 +214,17 @@ void validate(const Scene& s) {
        "init.method=halftone needs an input picture");
   need(s.segment.method != SegmentMethod::Explicit || !s.segment.ellipses.empty(), "segment.ellipses",
        "segment.method=explicit needs at least one ellipse");
+  if (s.segment.method == SegmentMethod::Sketch) {
+    const auto& k = s.segment.sketch;
+    const bool lines = !k.ridges.empty() || !k.arcs.empty();
+    need(!(lines && !k.image.empty()), "segment.sketch.image",
+         "give the sketch as lines (segment.sketch.ridges and arcs) or as an image, not both");
+    need(lines || !k.image.empty(), "segment.sketch.ridges",
+         "segment.method=sketch needs ridge lines and arcs (or segment.sketch.image)");
+    need(!k.image.empty() || !k.ridges.empty(), "segment.sketch.ridges", "the sketch has no ridge line");
+    need(!k.image.empty() || !k.arcs.empty(), "segment.sketch.arcs", "the sketch has no arc-like curve");
+    need(k.ridge_color != k.arc_color, "segment.sketch.arc_color", "must differ from segment.sketch.ridge_color");
+  }
   // The sand must fit in the window: at worst every grain is of the largest class.
   double largest = 0;
   for (int k = 0; k < kClasses; ++k) largest = std::max(largest, grain_area_px(s, k));

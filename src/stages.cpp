@@ -7,6 +7,7 @@
 
 #include "src/release.h"
 #include "src/render.h"
+#include "src/segment/sketch.h"
 
 namespace sandpic {
 namespace {
@@ -36,8 +37,9 @@ void draw_units(const Scene& s, const Segmentation& seg, cv::Mat& img) {
   for (const Unit& u : seg.units) {
     if (u.is_ellipse) {
       const Ellipse& e = u.ellipse;
+      // paper Fig. 8: inserted narrow ellipses in red
       cv::ellipse(img, cv::Point2d(e.c.x(), e.c.y()), cv::Size2d(e.a, e.b), e.theta * 180 / std::numbers::pi, 0, 360,
-                  cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+                  u.inserted ? cv::Scalar(0, 0, 230) : cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
     } else {
       cv::rectangle(img, cv::Point2d(u.x0, u.y0), cv::Point2d(u.x1 - 1, u.y1 - 1), cv::Scalar(0, 0, 0), 1);
     }
@@ -45,6 +47,17 @@ void draw_units(const Scene& s, const Segmentation& seg, cv::Mat& img) {
     cv::line(img, cv::Point2d(o.centre.x() - o.width / 2, o.centre.y() - 1),
              cv::Point2d(o.centre.x() + o.width / 2, o.centre.y() - 1), cv::Scalar(0, 140, 255), 2);
   }
+}
+
+// paper Fig. 8: ridge lines in blue, arc-like curves in green.
+void draw_sketch(const Sketch& k, cv::Mat& img) {
+  auto draw = [&img](const std::vector<Vec2>& line, cv::Scalar colour) {
+    for (size_t i = 0; i + 1 < line.size(); ++i)
+      cv::line(img, cv::Point2d(line[i].x(), line[i].y()), cv::Point2d(line[i + 1].x(), line[i + 1].y()), colour, 2,
+               cv::LINE_AA);
+  };
+  for (const auto& r : k.ridges) draw(r, cv::Scalar(200, 80, 20));
+  for (const auto& a : k.arcs) draw(a, cv::Scalar(40, 170, 40));
 }
 
 // Fig. 2h: release rank of every grain, early (blue) to late (red).
@@ -68,6 +81,7 @@ Stages stage_pictures(const Scene& s, const Initialization& init, const Segmenta
   cv::Mat filled = region_classes(s, init.grains);
   out.emplace_back("2-filled.png", filled);
   cv::Mat segmented = filled.clone();
+  if (s.segment.method == SegmentMethod::Sketch) draw_sketch(scene_sketch(s), segmented);
   draw_units(s, seg, segmented);
   out.emplace_back("3-segmentation.png", segmented);
   out.emplace_back("4-falling-order.png", falling_order_map(init.grains, order));

@@ -20,6 +20,7 @@
 #include "src/pipeline.h"
 #include "src/init/init.h"
 #include "src/scene_file.h"
+#include "src/segment/sketch.h"
 #include "validate/compare.h"
 #include "validate/friction_bench.h"
 #include "validate/layer_bench.h"
@@ -75,6 +76,28 @@ struct RenderCommand {
     write_atomic(out, std::string_view(reinterpret_cast<const char*>(r.png.data()), r.png.size()));
     if (!stats.empty()) write_atomic(stats, r.stats.dump(2) + "\n");
     for (auto& [name, img] : r.stages) write_png(stages + "/" + name, img);
+  }
+};
+
+// paper §5.2: a scene's sketch as a picture to paint over; a scene reads it
+// back through segment.sketch.image.
+struct SketchCommand {
+  SceneOptions scene;
+  std::string out;
+  int thickness = 3;
+  void add_to(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand("sketch", "draw a scene's sketch (ridge lines, arcs) as a picture of the region");
+    scene.add_to(cmd);
+    cmd->add_option("-o,--out", out, "output PNG")->required();
+    cmd->add_option("--thickness", thickness, "stroke width, px")->check(CLI::Range(1, 8));
+    cmd->callback([this] {
+      Scene s = scene.build();
+      const auto& k = s.segment.sketch;
+      if (k.ridges.empty() && k.arcs.empty() && k.image.empty())
+        throw key_error("segment.sketch.ridges", "the scene has no sketch (segment.sketch.ridges and arcs, or image)");
+      check_writable(out);
+      write_png(out, sketch_image(scene_sketch(s), k.ridge_color, k.arc_color, s.window.width, s.region.height, thickness));
+    });
   }
 };
 
@@ -300,12 +323,14 @@ int cli_main(int argc, char** argv) {
   app.require_subcommand(1);
   RenderCommand render;
   SceneCommand scene;
+  SketchCommand sketch;
   BenchCommand bench;
   BenchLayersCommand bench_layers;
   BenchFrictionCommand bench_friction;
   CompareCommand compare;
   render.add_to(app);
   scene.add_to(app);
+  sketch.add_to(app);
   bench.add_to(app);
   bench_layers.add_to(app);
   bench_friction.add_to(app);

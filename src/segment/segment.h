@@ -13,6 +13,7 @@ struct Unit {
   Ellipse ellipse;             // when is_ellipse
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // a cell, when !is_ellipse
   int row = 0;                 // paper §6: row of the falling order, 0 = lowest
+  bool inserted = false;       // paper §5.2, Fig. 8: a long narrow ellipse beside a ridge
 
   Vec2 centre() const;
   Vec2 outlet() const;  // paper §6-7: middle of the lowest edge

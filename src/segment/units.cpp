@@ -1,11 +1,13 @@
 // The falling units: automatic ellipses (paper §5.1, Fig. 6a), listed
-// ellipses, or the tessellation's own cells (Fig. 4b, 5b).
+// ellipses, the tessellation's own cells (Fig. 4b, 5b), or ellipses under a
+// sketch (§5.2, src/segment/sketch.cpp).
 #include <algorithm>
 #include <cmath>
 
 #include "src/errors.h"
 #include "src/rng.h"
 #include "src/segment/segment.h"
+#include "src/segment/sketch.h"
 
 namespace sandpic {
 
@@ -75,6 +77,8 @@ std::vector<Unit> make_units(const Scene& s, const Tessellation& t) {
   switch (s.segment.method) {
     case SegmentMethod::Ellipses:
       return automatic_ellipses(s);
+    case SegmentMethod::Sketch:
+      return sketch_units(s, scene_sketch(s));
     case SegmentMethod::Explicit:
       for (const EllipseSpec& e : s.segment.ellipses) units.push_back(ellipse_unit(Ellipse::from(e)));
       return units;

@@ -147,6 +147,21 @@ fi
 expect 2 "missing calibration" -- "$BIN" render -o "$T/e.png" --set lattice.calibration="$T/nothing.json"
 one_line; err_has "lattice.calibration"; absent "$T/e.png"
 
+# paper §5.2: a sketch drawn as a picture, painted over, read back as the sketch.
+expect 0 "sketch" -- "$BIN" sketch "$ROOT/examples/fig07.json" -o "$T/sketch.png"
+is_png "$T/sketch.png"
+expect 0 "render from the sketch picture" -- "$BIN" render -o "$T/sk.png" --scale 0.3 --stages "$T/sk" \
+  --set segment.method=sketch "segment.sketch.image=\"$T/sketch.png\""
+is_png "$T/sk/3-segmentation.png"
+expect 2 "sketch of a scene without one" -- "$BIN" sketch -o "$T/none.png"
+one_line; err_has "segment.sketch.ridges"; absent "$T/none.png"
+expect 2 "sketch with no crossing" -- "$BIN" render -o "$T/nc.png" --set segment.method=sketch \
+  'segment.sketch.ridges=[[[10, 300], [10, 0]]]' 'segment.sketch.arcs=[[[100, 100], [200, 100]]]'
+one_line; err_has "no arc-like curve crosses a ridge line"; absent "$T/nc.png"
+expect 2 "sketch picture missing" -- "$BIN" render -o "$T/nc.png" --set segment.method=sketch \
+  "segment.sketch.image=\"$T/nothing.png\""
+one_line; err_has "segment.sketch.image"; absent "$T/nc.png"
+
 # Every example renders (scaled down).
 for scene in "$ROOT"/examples/*.json; do
   expect 0 "example $(basename "$scene")" -- "$BIN" render "$scene" -o "$T/ex.png" --scale 0.3
