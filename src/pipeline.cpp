@@ -45,6 +45,7 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
   Clock clock;
   ordered_json timing;
   cv::Mat background = load_background(s);  // read early: a bad file fails before the work
+  cv::Mat figures = load_figures(s);
   Initialization init = initialize(s);
   timing["init_s"] = clock.lap();
   Segmentation seg = segment(s, init.tessellation);
@@ -62,7 +63,7 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
                           " grains did not settle inside the window (seed " + std::to_string(s.seed) + ")");
 
   RunResult out;
-  out.picture = render(s, sim_result.class_map, background);
+  out.picture = render(s, sim_result.class_map, background, figures);
   out.class_map = sim_result.class_map;
   timing["render_s"] = clock.lap();
   if (!cv::imencode(".png", out.picture, out.png)) throw SimulationError("PNG encoding failed");

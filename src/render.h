@@ -10,8 +10,14 @@ namespace sandpic {
 // The background picture resized to the window, or an empty Mat if none.
 cv::Mat load_background(const Scene& s);
 
-// class_map: CV_8U of the window, class 0..3 or kNoSand. Returns 8-bit BGR.
-cv::Mat render(const Scene& s, const cv::Mat& class_map, const cv::Mat& background);
+// paper §10, Fig. 16: render.figures as one mask of the window (CV_8U, 255
+// on a figure), or an empty Mat if none. Mask pictures are read here.
+cv::Mat load_figures(const Scene& s);
+
+// class_map: CV_8U of the window, class 0..3 or kNoSand. Sand on `figures`
+// is drawn in C1 with probability 0.7, else C2, keyed by (layout seed,
+// pixel). Returns 8-bit BGR.
+cv::Mat render(const Scene& s, const cv::Mat& class_map, const cv::Mat& background, const cv::Mat& figures = {});
 
 cv::Vec3b bgr(Rgb c);
 

@@ -16,6 +16,7 @@ enum class Stream : uint64_t {
   OutletJitter,      // release point across the outlet (physics seed)
   LatticeSlide,      // lattice: left/right ties (physics seed)
   Sketch,            // paper §5.2: eccentricities and narrow-ellipse angles per crossing
+  Figure,            // paper §10: C1 or C2 for sand on a figure, per pixel
 };
 
 inline uint64_t mix64(uint64_t z) {  // splitmix64 finaliser

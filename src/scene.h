@@ -38,6 +38,13 @@ struct CellOverride {
   int secondary = 1;
 };
 
+// paper §10, Fig. 16: a figure placed over the sand.
+struct Figure {
+  std::string mask;   // a picture: its dark pixels (luminance under 128) are the figure
+  double x = 0, y = 0, scale = 1;  // the mask's top-left in the window (px) and its size factor
+  Polyline polygon;   // or a polygon in window px
+};
+
 struct Scene {
   std::string description;  // free text for people; the pipeline ignores it
   struct Window {
@@ -139,6 +146,7 @@ struct Scene {
   struct Render {
     std::string background;  // image for the emptied upper part (§10, Fig. 14g)
     Rgb background_color{248, 246, 240};
+    std::vector<Figure> figures;
   } render;
 
   std::string base_dir;  // folder of the scene file; relative paths start here

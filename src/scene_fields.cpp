@@ -180,7 +180,19 @@ std::vector<T> list_of(const json& v, const std::string& path,
   return out;
 }
 
-// Lines of a sketch: [[[x, y], [x, y], ...], ...], at least two points each.
+// A line: [[x, y], [x, y], ...], at least two points.
+Polyline as_polyline(const json& v, const std::string& p) {
+  if (!v.is_array() || v.size() < 2) throw key_error(p, "expected a line of at least two [x, y] points, got " + shown(v));
+  Polyline line;
+  for (size_t j = 0; j < v.size(); ++j) {
+    const std::string q = p + "[" + std::to_string(j) + "]";
+    element(v[j], q, 2);
+    line.push_back({in_range(v[j][0], q + "[0]", -1e6, 1e6), in_range(v[j][1], q + "[1]", -1e6, 1e6)});
+  }
+  return line;
+}
+
+// Lines of a sketch: [[[x, y], [x, y], ...], ...].
 template <class Acc>
 Field polylines(std::string path, Acc acc, std::string help) {
   return {path, help, true,
@@ -196,18 +208,7 @@ Field polylines(std::string path, Acc acc, std::string help) {
           [acc, path](Scene& s, const json& v) {
             if (!v.is_array()) throw key_error(path, std::string("expected an array of lines, got ") + v.type_name());
             std::vector<Polyline> lines;
-            for (size_t i = 0; i < v.size(); ++i) {
-              const std::string p = path + "[" + std::to_string(i) + "]";
-              if (!v[i].is_array() || v[i].size() < 2)
-                throw key_error(p, "expected a line of at least two [x, y] points, got " + shown(v[i]));
-              Polyline line;
-              for (size_t j = 0; j < v[i].size(); ++j) {
-                const std::string q = p + "[" + std::to_string(j) + "]";
-                element(v[i][j], q, 2);
-                line.push_back({in_range(v[i][j][0], q + "[0]", -1e6, 1e6), in_range(v[i][j][1], q + "[1]", -1e6, 1e6)});
-              }
-              lines.push_back(std::move(line));
-            }
+            for (size_t i = 0; i < v.size(); ++i) lines.push_back(as_polyline(v[i], path + "[" + std::to_string(i) + "]"));
             acc(s) = std::move(lines);
           }};
 }
@@ -241,6 +242,44 @@ Field ellipses_field() {
           },
           [keys](Scene& s, const json& v) {
             s.segment.ellipses = list_of<EllipseSpec>(v, "segment.ellipses", keys, {"cx", "cy", "a", "b"});
+          }};
+}
+
+// paper §10, Fig. 16: figures over the sand.
+Field figures_field() {
+  using Setter = std::function<void(Figure&, const json&, const std::string&)>;
+  std::vector<std::pair<std::string, Setter>> keys = {
+      {"mask",
+       [](Figure& f, const json& v, const std::string& p) {
+         if (!v.is_string()) throw key_error(p, std::string("expected a string, got ") + v.type_name());
+         f.mask = v.get<std::string>();
+       }},
+      {"polygon", [](Figure& f, const json& v, const std::string& p) { f.polygon = as_polyline(v, p); }},
+      {"x", [](Figure& f, const json& v, const std::string& p) { f.x = in_range(v, p, -1e6, 1e6); }},
+      {"y", [](Figure& f, const json& v, const std::string& p) { f.y = in_range(v, p, -1e6, 1e6); }},
+      {"scale", [](Figure& f, const json& v, const std::string& p) { f.scale = in_range(v, p, 1e-3, 1e3); }},
+  };
+  return {"render.figures",
+          "figures over the sand (§10, Fig. 16): [{mask: image, x, y, scale} or {polygon: [[x, y], ...]}]; "
+          "sand on a figure is drawn in C1 (0.7) and C2 (0.3)",
+          true,
+          [](const Scene& s) {
+            ordered_json out = ordered_json::array();
+            for (const Figure& f : s.render.figures) {
+              ordered_json o;
+              if (!f.mask.empty()) o = {{"mask", f.mask}, {"x", f.x}, {"y", f.y}, {"scale", f.scale}};
+              ordered_json pts = ordered_json::array();
+              for (const auto& p : f.polygon) pts.push_back({p[0], p[1]});
+              if (!f.polygon.empty()) o["polygon"] = pts;
+              out.push_back(o);
+            }
+            return out;
+          },
+          [keys](Scene& s, const json& v) {
+            s.render.figures = list_of<Figure>(v, "render.figures", keys, {});
+            for (size_t i = 0; i < s.render.figures.size(); ++i)
+              if (s.render.figures[i].mask.empty() == s.render.figures[i].polygon.empty())
+                throw key_error("render.figures[" + std::to_string(i) + "]", "needs a mask image or a polygon (one of them)");
           }};
 }
 
@@ -449,6 +488,7 @@ std::vector<Field> make_fields() {
            "divergence: two grains overlapping by more than this (small-grain diameters) stop the run"),
       text("render.background", [](S& s) -> auto& { return s.render.background; },
            "picture behind the emptied upper part (§10, Fig. 14g); empty: render.background_color"),
+      figures_field(),
       colour("render.background_color", [](S& s) -> auto& { return s.render.background_color; },
              "colour of the emptied upper part"),
   };

@@ -72,9 +72,10 @@ json scaled(const json& v, double f, const std::string& path) {
     for (auto& e : v) out.push_back(scaled(e, f, path));
     return out;
   }
-  if (v.is_object()) {  // an explicit ellipse: positions and axes scale, the angle does not
+  if (v.is_object()) {  // an ellipse or a figure: positions, axes and sizes scale, an angle or a file does not
     json out = v;
-    for (auto k : {"cx", "cy", "a", "b"}) out[k] = v[k].get<double>() * f;
+    for (auto k : {"cx", "cy", "a", "b", "x", "y", "scale", "polygon"})
+      if (v.contains(k)) out[k] = scaled(v[k], f, path);
     return out;
   }
   return v;

@@ -162,6 +162,11 @@ expect 2 "sketch picture missing" -- "$BIN" render -o "$T/nc.png" --set segment.
   "segment.sketch.image=\"$T/nothing.png\""
 one_line; err_has "segment.sketch.image"; absent "$T/nc.png"
 
+# paper §10, Fig. 16: figures; a missing mask is named.
+expect 2 "figure mask missing" -- "$BIN" render -o "$T/fg.png" --set \
+  "render.figures=[{\"mask\": \"$T/nothing.png\"}]"
+one_line; err_has "render.figures\[0\].mask"; absent "$T/fg.png"
+
 # Every example renders (scaled down).
 for scene in "$ROOT"/examples/*.json; do
   expect 0 "example $(basename "$scene")" -- "$BIN" render "$scene" -o "$T/ex.png" --scale 0.3
