@@ -51,13 +51,8 @@ void draw_units(const Scene& s, const Segmentation& seg, cv::Mat& img) {
 
 // paper Fig. 8: ridge lines in blue, arc-like curves in green.
 void draw_sketch(const Sketch& k, cv::Mat& img) {
-  auto draw = [&img](const std::vector<Vec2>& line, cv::Scalar colour) {
-    for (size_t i = 0; i + 1 < line.size(); ++i)
-      cv::line(img, cv::Point2d(line[i].x(), line[i].y()), cv::Point2d(line[i + 1].x(), line[i + 1].y()), colour, 2,
-               cv::LINE_AA);
-  };
-  for (const auto& r : k.ridges) draw(r, cv::Scalar(200, 80, 20));
-  for (const auto& a : k.arcs) draw(a, cv::Scalar(40, 170, 40));
+  draw_lines(img, k.ridges, cv::Scalar(200, 80, 20), 2);
+  draw_lines(img, k.arcs, cv::Scalar(40, 170, 40), 2);
 }
 
 // Fig. 2h: release rank of every grain, early (blue) to late (red).

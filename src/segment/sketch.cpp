@@ -113,16 +113,16 @@ Sketch sketch_from_image(const cv::Mat& bgr, Rgb ridge, Rgb arc, int width, int 
   return Sketch{stroke_lines(r_joined), stroke_lines(a_joined), 12};
 }
 
+void draw_lines(cv::Mat& img, const std::vector<std::vector<Vec2>>& lines, cv::Scalar bgr, int thickness) {
+  for (const auto& l : lines)
+    for (size_t i = 0; i + 1 < l.size(); ++i)
+      cv::line(img, cv::Point2d(l[i].x(), l[i].y()), cv::Point2d(l[i + 1].x(), l[i + 1].y()), bgr, thickness, cv::LINE_AA);
+}
+
 cv::Mat sketch_image(const Sketch& k, Rgb ridge, Rgb arc, int width, int height, int thickness) {
   cv::Mat img(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
-  auto draw = [&](const std::vector<std::vector<Vec2>>& lines, Rgb c) {
-    for (const auto& l : lines)
-      for (size_t i = 0; i + 1 < l.size(); ++i)
-        cv::line(img, cv::Point2d(l[i].x(), l[i].y()), cv::Point2d(l[i + 1].x(), l[i + 1].y()), cv::Scalar(c.b, c.g, c.r),
-                 thickness, cv::LINE_AA);
-  };
-  draw(k.ridges, ridge);
-  draw(k.arcs, arc);
+  draw_lines(img, k.ridges, cv::Scalar(ridge.b, ridge.g, ridge.r), thickness);
+  draw_lines(img, k.arcs, cv::Scalar(arc.b, arc.g, arc.r), thickness);
   return img;
 }
 

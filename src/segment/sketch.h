@@ -41,6 +41,9 @@ Sketch sketch_from_image(const cv::Mat& bgr, Rgb ridge, Rgb arc, int width, int 
 // sketch_from_image reads back, for a designer to paint over.
 cv::Mat sketch_image(const Sketch& k, Rgb ridge, Rgb arc, int width, int height, int thickness);
 
+// Draws lines (antialiased) on a BGR picture: the sketch picture and --stages share it.
+void draw_lines(cv::Mat& img, const std::vector<std::vector<Vec2>>& lines, cv::Scalar bgr, int thickness);
+
 // Every crossing of an arc with a ridge, by ridge and then along it.
 std::vector<Crossing> crossings(const Sketch& k);
 
