@@ -18,3 +18,8 @@ TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 "$BIN" render examples/fig07.json -o "$TMP/fig07.png" --stages "$TMP"
 cp "$TMP/3-segmentation.png" "$OUT/stages/fig07-segmentation.png"
+"$BIN" render examples/fig18.json -o "$OUT/fig18-fallen.png" --set render.symmetric=false
+for fig in fig17 fig18; do
+  "$BIN" render examples/$fig.json -o "$TMP/$fig.png" --stages "$TMP"
+  cp "$TMP/3-segmentation.png" "$OUT/stages/$fig-segmentation.png"
+done

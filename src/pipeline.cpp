@@ -63,8 +63,13 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
                           " grains did not settle inside the window (seed " + std::to_string(s.seed) + ")");
 
   RunResult out;
-  out.picture = render(s, sim_result.class_map, background, figures);
   out.class_map = sim_result.class_map;
+  int mirror_row = -1;
+  if (s.render.symmetric) {  // paper §10, Fig. 18c: a copy of the picture's sand, not new grains
+    out.class_map = sim_result.class_map.clone();
+    mirror_row = mirror_over(out.class_map, kNoSand);
+  }
+  out.picture = render(s, out.class_map, background, figures);
   timing["render_s"] = clock.lap();
   if (!cv::imencode(".png", out.picture, out.png)) throw SimulationError("PNG encoding failed");
   timing["encode_s"] = clock.lap();
@@ -90,6 +95,7 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
   st["grains"]["per_class"] = init.grains.per_class();
   st["grains"]["released"] = int64_t(order.grain.size());
   st["grains"]["in_picture"] = in_picture;
+  if (mirror_row >= 0) st["symmetric"]["mirror_row"] = mirror_row;
   st["timing"] = timing;
   st["backend"] = sim_result.stats;
   return out;

@@ -1,5 +1,6 @@
 #include "src/render.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <opencv2/imgproc.hpp>
@@ -80,6 +81,23 @@ cv::Mat render(const Scene& s, const cv::Mat& class_map, const cv::Mat& backgrou
     }
   });
   return out;
+}
+
+int mirror_over(cv::Mat& class_map, uint8_t no_sand) {
+  CV_Assert(class_map.type() == CV_8U);
+  // The mirror row is the deepest valley of the surface: below it every
+  // column is sand, so the flipped copy laid over the picture leaves no hole.
+  int axis = 0;
+  for (int x = 0; x < class_map.cols; ++x) {
+    int y = 0;
+    while (y < class_map.rows && class_map.at<uint8_t>(y, x) == no_sand) ++y;
+    axis = std::max(axis, y);
+  }
+  // Row axis - 1 - i shows row axis + i, over whatever was there (the copy is
+  // placed over the picture, covering the peaks that rose above the valley).
+  for (int i = 0; axis - 1 - i >= 0 && axis + i < class_map.rows; ++i)
+    class_map.row(axis + i).copyTo(class_map.row(axis - 1 - i));
+  return axis;
 }
 
 }  // namespace sandpic

@@ -21,4 +21,11 @@ cv::Mat render(const Scene& s, const cv::Mat& class_map, const cv::Mat& backgrou
 
 cv::Vec3b bgr(Rgb c);
 
+// paper §10, Fig. 18c: "copy the asymmetric pattern and flip it vertically,
+// and place flipped asymmetric pattern over" it. The class map above the
+// surface's deepest valley becomes the mirror image of the sand below it,
+// exactly symmetric about that row. Returns the row (the window's height
+// when a column holds no sand: nothing is mirrored).
+int mirror_over(cv::Mat& class_map, uint8_t no_sand);
+
 }  // namespace sandpic

@@ -17,6 +17,8 @@ enum class Stream : uint64_t {
   LatticeSlide,      // lattice: left/right ties (physics seed)
   Sketch,            // paper §5.2: eccentricities and narrow-ellipse angles per crossing
   Figure,            // paper §10: C1 or C2 for sand on a figure, per pixel
+  Pattern,           // paper §10, Fig. 18: a row's unit of two ellipses
+  Area,              // paper §10, Fig. 17: an area's own layout seed
 };
 
 inline uint64_t mix64(uint64_t z) {  // splitmix64 finaliser

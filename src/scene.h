@@ -18,7 +18,7 @@ struct Rgb {
 
 enum class InitMethod { Tessellation, Halftone };
 enum class TessellationKind { Uniform, Varying, Strips };
-enum class SegmentMethod { Ellipses, Explicit, Cells, Sketch };
+enum class SegmentMethod { Ellipses, Explicit, Cells, Sketch, Pattern };
 enum class Mode { Lattice, Dem };
 enum class Layers { Three, Bcre, AllDynamic };  // paper §8: layer models of the DEM mode
 
@@ -45,8 +45,20 @@ struct Figure {
   Polyline polygon;   // or a polygon in window px
 };
 
+// paper §10, Fig. 17: an area of the initialization region with its own
+// tessellation, colour mix and segmentation (mountains, clouds).
+struct Area {
+  std::array<double, 4> rect{0, 0, 1e6, 1e6};  // x0, y0, x1, y1 in window px, clipped to the region
+  Polyline polygon;    // or, inside rect, only these pixel centres
+  std::string preset;  // applied first (its init, segment and grains.proportions keys only)
+  // The area's own scene keys (init.*, segment.*, grains.proportions) as
+  // (path, JSON text), applied over the scene in this order.
+  std::vector<std::pair<std::string, std::string>> settings;
+};
+
 struct Scene {
   std::string description;  // free text for people; the pipeline ignores it
+  std::string preset;       // paper §9: a base read before the scene's own keys (src/presets.cpp)
   struct Window {
     int width = 1000;  // paper §4.1
     int height = 700;
@@ -95,6 +107,16 @@ struct Scene {
       bool narrow = true;              // insert the long narrow ellipses (Fig. 7c)
       double narrow_spacing = 1.2;     // ... where crossings along a ridge are farther apart than this x b
     } sketch;
+    // paper §9-10, Fig. 18: method=pattern covers the region with full-width
+    // rows from the bottom up; each row repeats a unit of two ellipses of
+    // different axes along x, rows drawn apart; thin separating rectangles between rows.
+    struct Pattern {
+      double row_height_min = 30, row_height_max = 60;    // px
+      double semi_major_min = 18, semi_major_max = 60;    // px, each ellipse of a unit
+      double minor_share_min = 0.55, minor_share_max = 1; // b as a share of half the row height
+      double separator = 4;      // px: thin rectangles between rows (0: none)
+      int separator_class = 1;   // their grains' class S1..S4 (0: the tessellation's)
+    } pattern;
   } segment;
   struct Order {
     double row_tolerance = 20;  // px: centres this close in y share a row (§6)
@@ -147,7 +169,11 @@ struct Scene {
     std::string background;  // image for the emptied upper part (§10, Fig. 14g)
     Rgb background_color{248, 246, 240};
     std::vector<Figure> figures;
+    // paper §10, Fig. 18c: the settled sand copied, flipped vertically and
+    // placed over itself, mirrored about the top of the sand.
+    bool symmetric = false;
   } render;
+  std::vector<Area> regions;  // paper §10, Fig. 17; a pixel in none keeps the scene's own settings
 
   std::string base_dir;  // folder of the scene file; relative paths start here
 

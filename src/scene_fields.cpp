@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "src/errors.h"
+#include "src/presets.h"
 #include "src/scene_file.h"
 
 namespace sandpic {
@@ -334,10 +335,122 @@ Field repose_deg_field() {
           }};
 }
 
+// paper §9: a preset's keys, read when the key is (a scene file reads its
+// "preset" before its other keys, so they override it).
+Field preset_field() {
+  std::string names;
+  for (const Preset& p : presets()) names += (names.empty() ? "" : " | ") + p.name;
+  return {"preset", "a base from §9's rules, read first; the scene's own keys override it (" + names + ")", false,
+          [](const Scene& s) { return ordered_json(s.preset); },
+          [names](Scene& s, const json& v) {
+            if (!v.is_string()) throw key_error("preset", std::string("expected a string, got ") + v.type_name());
+            const std::string name = v.get<std::string>();
+            if (name.empty()) return void(s.preset.clear());
+            const Preset* p = find_preset(name);
+            if (!p) throw key_error("preset", "unknown preset " + shown(v) + " (" + names + ")");
+            apply_json(s, json::parse(p->json));
+            s.preset = name;
+          }};
+}
+
+bool area_key(const std::string& path) {
+  return path.rfind("init.", 0) == 0 || path.rfind("segment.", 0) == 0 || path == "grains.proportions";
+}
+
+// An area's own keys, flattened to (path, JSON text); every value checked
+// against its field here, so errors name regions[i].path.
+void flatten_area(const json& v, const std::string& path, const std::string& where,
+                  std::vector<std::pair<std::string, std::string>>& out) {
+  const auto& fields = scene_fields();
+  const bool leaf = std::any_of(fields.begin(), fields.end(), [&](const Field& f) { return f.path == path; });
+  const bool prefix = std::any_of(fields.begin(), fields.end(),
+                                  [&](const Field& f) { return f.path.rfind(path + ".", 0) == 0; });
+  if (!leaf && prefix && v.is_object()) {
+    for (auto& [k, child] : v.items()) flatten_area(child, path.empty() ? k : path + "." + k, where, out);
+    return;
+  }
+  if (!leaf) throw InputError("scene key '" + where + "." + path + "': unknown key (did you mean '" + nearest_key(path) + "'?)");
+  if (!area_key(path))
+    throw InputError("scene key '" + where + "." + path + "': an area sets only init.*, segment.* and grains.proportions");
+  out.emplace_back(path, v.dump());
+}
+
+Area as_area(const json& v, const std::string& where) {
+  if (!v.is_object()) throw key_error(where, "expected an object");
+  Area a;
+  for (auto& [k, val] : v.items()) {
+    const std::string p = where + "." + k;
+    if (k == "rect") {
+      element(val, p, 4);
+      for (int i = 0; i < 4; ++i) a.rect[i] = in_range(val[i], p + "[" + std::to_string(i) + "]", -1e6, 1e6);
+      if (a.rect[2] <= a.rect[0] || a.rect[3] <= a.rect[1]) throw key_error(p, "needs x0 < x1 and y0 < y1");
+    } else if (k == "polygon") {
+      a.polygon = as_polyline(val, p);
+      if (a.polygon.size() < 3) throw key_error(p, "a polygon needs at least three points");
+    } else if (k == "preset") {
+      if (!val.is_string() || !find_preset(val.get<std::string>()))
+        throw key_error(p, "unknown preset " + shown(val) + " (`sandpic scene --presets` lists them)");
+      a.preset = val.get<std::string>();
+    } else {
+      flatten_area(val, k, where, a.settings);
+    }
+  }
+  // Every value checked once, with the path it has in the file.
+  Scene probe;
+  for (auto& [path, text] : a.settings) {
+    try {
+      apply_setting(probe, path + "=" + text);
+    } catch (const InputError& e) {
+      throw InputError(with_path_prefix(e, where));
+    }
+  }
+  return a;
+}
+
+ordered_json area_json(const Area& a) {
+  ordered_json o;
+  o["rect"] = a.rect;
+  if (!a.polygon.empty()) {
+    ordered_json pts = ordered_json::array();
+    for (const auto& p : a.polygon) pts.push_back({p[0], p[1]});
+    o["polygon"] = pts;
+  }
+  if (!a.preset.empty()) o["preset"] = a.preset;
+  for (auto& [path, text] : a.settings) {
+    ordered_json* node = &o;
+    std::string rest = path;
+    for (size_t dot; (dot = rest.find('.')) != std::string::npos; rest = rest.substr(dot + 1))
+      node = &(*node)[rest.substr(0, dot)];
+    (*node)[rest] = ordered_json::parse(text);
+  }
+  return o;
+}
+
+// paper §10, Fig. 17: areas of the region with their own settings.
+Field regions_field() {
+  return {"regions",
+          "areas of the region with their own tessellation, colour mix and segmentation (§10, Fig. 17): "
+          "[{rect: [x0, y0, x1, y1] or polygon: [[x, y], ...], preset, init: {...}, segment: {...}, "
+          "grains: {proportions}}]; a pixel belongs to the first area listed that holds it",
+          false,
+          [](const Scene& s) {
+            ordered_json out = ordered_json::array();
+            for (const Area& a : s.regions) out.push_back(area_json(a));
+            return out;
+          },
+          [](Scene& s, const json& v) {
+            if (!v.is_array()) throw key_error("regions", std::string("expected an array, got ") + v.type_name());
+            std::vector<Area> areas;
+            for (size_t i = 0; i < v.size(); ++i) areas.push_back(as_area(v[i], "regions[" + std::to_string(i) + "]"));
+            s.regions = std::move(areas);
+          }};
+}
+
 std::vector<Field> make_fields() {
   using S = Scene;
   return {
       text("description", [](S& s) -> auto& { return s.description; }, "free text about the scene, for people"),
+      preset_field(),
       integer("window.width", [](S& s) -> int& { return s.window.width; }, 8, 20000, "window width, px (§4.1)", true),
       integer("window.height", [](S& s) -> int& { return s.window.height; }, 8, 20000, "window height, px", true),
       integer("region.height", [](S& s) -> int& { return s.region.height; }, 1, 20000,
@@ -382,9 +495,10 @@ std::vector<Field> make_fields() {
                             {{"ellipses", SegmentMethod::Ellipses},
                              {"explicit", SegmentMethod::Explicit},
                              {"cells", SegmentMethod::Cells},
-                             {"sketch", SegmentMethod::Sketch}},
+                             {"sketch", SegmentMethod::Sketch},
+                             {"pattern", SegmentMethod::Pattern}},
                             "falling units: automatic ellipses (§5.1), listed ellipses, the cells (Fig. 4b, 5b), "
-                            "or ellipses under a sketch's crossings (§5.2)"),
+                            "ellipses under a sketch's crossings (§5.2), or a regular pattern's rows (§10, Fig. 18)"),
       real("segment.semi_major_min", [](S& s) -> double& { return s.segment.semi_major_min; }, 1, 1e5,
            "semi-major axis of the top row of ellipses, px", true),
       real("segment.semi_major_max", [](S& s) -> double& { return s.segment.semi_major_max; }, 1, 1e5,
@@ -414,6 +528,22 @@ std::vector<Field> make_fields() {
               "§5.2, Fig. 7c: insert two long narrow ellipses on top of an ellipse whose next crossing up its ridge is far"),
       real("segment.sketch.narrow_spacing", [](S& s) -> double& { return s.segment.sketch.narrow_spacing; }, 0, 100,
            "§5.2: far means farther than this times the lower ellipse's semi-minor axis"),
+      real("segment.pattern.row_height_min", [](S& s) -> double& { return s.segment.pattern.row_height_min; }, 1, 1e5,
+           "pattern (Fig. 18): lowest row of ellipse units, px", true),
+      real("segment.pattern.row_height_max", [](S& s) -> double& { return s.segment.pattern.row_height_max; }, 1, 1e5,
+           "pattern: highest row, px", true),
+      real("segment.pattern.semi_major_min", [](S& s) -> double& { return s.segment.pattern.semi_major_min; }, 1, 1e5,
+           "pattern: smallest semi-major axis of a unit's two ellipses, px", true),
+      real("segment.pattern.semi_major_max", [](S& s) -> double& { return s.segment.pattern.semi_major_max; }, 1, 1e5,
+           "pattern: largest semi-major axis, px", true),
+      real("segment.pattern.minor_share_min", [](S& s) -> double& { return s.segment.pattern.minor_share_min; }, 0.05, 1,
+           "pattern: smallest semi-minor axis, as a share of half the row height"),
+      real("segment.pattern.minor_share_max", [](S& s) -> double& { return s.segment.pattern.minor_share_max; }, 0.05, 1,
+           "pattern: largest semi-minor axis, as a share of half the row height"),
+      real("segment.pattern.separator", [](S& s) -> double& { return s.segment.pattern.separator; }, 0, 1e4,
+           "pattern: height of the thin rectangles between rows, px (0: none)", true),
+      integer("segment.pattern.separator_class", [](S& s) -> int& { return s.segment.pattern.separator_class; }, 0, 4,
+              "pattern: class S1..S4 of the separators' grains (0: as the tessellation filled them)"),
       real("order.row_tolerance", [](S& s) -> double& { return s.order.row_tolerance; }, 0, 1e5,
            "units whose centres differ by at most this in y form one row (§6), px", true),
       real("release.outlet_width_mm", [](S& s) -> double& { return s.release.outlet_width_mm; }, 0, 1e4,
@@ -489,8 +619,11 @@ std::vector<Field> make_fields() {
       text("render.background", [](S& s) -> auto& { return s.render.background; },
            "picture behind the emptied upper part (§10, Fig. 14g); empty: render.background_color"),
       figures_field(),
+      boolean("render.symmetric", [](S& s) -> auto& { return s.render.symmetric; },
+              "§10, Fig. 18c: copy the settled sand, flip it vertically and place it over itself"),
       colour("render.background_color", [](S& s) -> auto& { return s.render.background_color; },
              "colour of the emptied upper part"),
+      regions_field(),
   };
 }
 

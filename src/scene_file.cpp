@@ -8,6 +8,8 @@
 
 #include "src/errors.h"
 #include "src/output.h"
+#include "src/presets.h"
+#include "src/rng.h"
 
 namespace sandpic {
 namespace {
@@ -98,7 +100,41 @@ std::string nearest_key(const std::string& path) {
 
 void apply_json(Scene& s, const json& doc) {
   if (!doc.is_object()) throw InputError("a scene file holds one JSON object, got " + std::string(doc.type_name()));
-  apply_at(s, "", doc);
+  // paper §9: a preset is a base, so it is read before the keys that override it.
+  if (doc.contains("preset")) apply_at(s, "preset", doc["preset"]);
+  for (auto& [k, child] : doc.items())
+    if (k != "preset") apply_at(s, k, child);
+}
+
+std::string with_path_prefix(const InputError& e, const std::string& prefix) {
+  std::string m = e.what();
+  const std::string head = "scene key '";
+  if (m.rfind(head, 0) == 0) m.insert(head.size(), prefix + ".");
+  else m = prefix + ": " + m;
+  return m;
+}
+
+Scene area_scene(const Scene& s, size_t i) {
+  const Area& a = s.regions.at(i);
+  Scene out = s;
+  out.regions.clear();
+  const std::string where = "regions[" + std::to_string(i) + "]";
+  try {
+    if (!a.preset.empty()) {  // only the keys an area may set
+      json doc = json::parse(find_preset(a.preset)->json), part = json::object();
+      for (const char* k : {"init", "segment"})
+        if (doc.contains(k)) part[k] = doc[k];
+      if (doc.contains("grains") && doc["grains"].contains("proportions"))
+        part["grains"]["proportions"] = doc["grains"]["proportions"];
+      apply_json(out, part);
+    }
+    for (auto& [path, text] : a.settings) find_field(path)->set(out, json::parse(text));
+  } catch (const InputError& e) {
+    throw InputError(with_path_prefix(e, where));
+  }
+  // Its own layout: two areas with one tessellation kind are not copies.
+  out.layout_seed = key(s.layout(), Stream::Area, i);
+  return out;
 }
 
 Scene load_scene(const std::string& path) {
@@ -144,6 +180,13 @@ void apply_scale(Scene& s, double factor) {
       if (f.px) f.set(s, scaled(json::parse(f.get(s).dump()), factor, f.path));
   } catch (const InputError& e) {
     throw InputError("--scale " + std::to_string(factor) + " makes " + e.what());
+  }
+  for (size_t i = 0; i < s.regions.size(); ++i) {  // areas: their place and their own lengths in px
+    Area& a = s.regions[i];
+    for (double& v : a.rect) v *= factor;
+    for (auto& p : a.polygon) p[0] *= factor, p[1] *= factor;
+    for (auto& [path, text] : a.settings)
+      if (find_field(path)->px) text = scaled(json::parse(text), factor, path).dump();
   }
   s.units.mm_per_pixel /= factor;
   for (auto& d : s.grains.diameter_mm) d /= factor;
@@ -225,6 +268,25 @@ void validate(const Scene& s) {
     need(!k.image.empty() || !k.ridges.empty(), "segment.sketch.ridges", "the sketch has no ridge line");
     need(!k.image.empty() || !k.arcs.empty(), "segment.sketch.arcs", "the sketch has no arc-like curve");
     need(k.ridge_color != k.arc_color, "segment.sketch.arc_color", "must differ from segment.sketch.ridge_color");
+  }
+  if (s.segment.method == SegmentMethod::Pattern) {
+    const auto& p = s.segment.pattern;
+    need(p.row_height_min <= p.row_height_max, "segment.pattern.row_height_min",
+         "must not exceed segment.pattern.row_height_max");
+    need(p.semi_major_min <= p.semi_major_max, "segment.pattern.semi_major_min",
+         "must not exceed segment.pattern.semi_major_max");
+    need(p.minor_share_min <= p.minor_share_max, "segment.pattern.minor_share_min",
+         "must not exceed segment.pattern.minor_share_max");
+    need(p.row_height_min * p.minor_share_min >= 1, "segment.pattern.row_height_min",
+         "with segment.pattern.minor_share_min, ellipses would be under 1 px high");
+  }
+  for (size_t i = 0; i < s.regions.size(); ++i) {
+    const Scene a = area_scene(s, i);
+    try {
+      validate(a);
+    } catch (const InputError& e) {
+      throw InputError(with_path_prefix(e, "regions[" + std::to_string(i) + "]"));
+    }
   }
   // The sand must fit in the window: at worst every grain is of the largest class.
   double largest = 0;

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "src/errors.h"
 #include "src/scene.h"
 
 namespace sandpic {
@@ -40,5 +41,11 @@ std::string scene_digest(const Scene& s);
 // it names no file). Read by the lattice mode only: a DEM run never opens it.
 Scene with_calibration(const Scene& s);
 std::string nearest_key(const std::string& path);
+// paper §10, Fig. 17: the scene area i of s.regions is made with: s's keys,
+// then the area's preset (its init, segment and grains.proportions keys) and
+// its own keys, no areas of its own, and a layout seed of its own.
+Scene area_scene(const Scene& s, size_t i);
+// "scene key 'regions[0].segment.x': ..." from "scene key 'segment.x': ...".
+std::string with_path_prefix(const InputError& e, const std::string& prefix);
 
 }  // namespace sandpic

@@ -5,6 +5,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "src/regions.h"
 #include "src/release.h"
 #include "src/render.h"
 #include "src/segment/sketch.h"
@@ -27,8 +28,15 @@ cv::Mat initialization(const Scene& s, const Initialization& init) {
     return img;
   }
   cv::Mat img(s.region.height, s.window.width, CV_8UC3, cv::Scalar(255, 255, 255));
-  for (const Cell& c : init.tessellation.cells)  // Fig. 2a: the cells
-    cv::rectangle(img, cv::Point(c.x0, c.y0), cv::Point(c.x1 - 1, c.y1 - 1), cv::Scalar(0, 0, 0), 1);
+  const cv::Mat areas = area_map(s);
+  for (const Cell& c : init.tessellation.cells) {  // Fig. 2a: the cells; Fig. 17a: each area's own
+    cv::Mat cell = img(cv::Rect(c.x0, c.y0, c.x1 - c.x0, c.y1 - c.y0));
+    cv::Mat mask;
+    if (!areas.empty()) mask = areas(cv::Rect(c.x0, c.y0, c.x1 - c.x0, c.y1 - c.y0)) == c.area;
+    cv::Mat drawn = cell.clone();
+    cv::rectangle(drawn, cv::Point(0, 0), cv::Point(drawn.cols - 1, drawn.rows - 1), cv::Scalar(0, 0, 0), 1);
+    drawn.copyTo(cell, mask);
+  }
   return img;
 }
 

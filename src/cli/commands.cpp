@@ -19,6 +19,7 @@
 #include "src/output.h"
 #include "src/pipeline.h"
 #include "src/init/init.h"
+#include "src/presets.h"
 #include "src/scene_file.h"
 #include "src/segment/sketch.h"
 #include "validate/compare.h"
@@ -102,16 +103,25 @@ struct SketchCommand {
 };
 
 struct SceneCommand {
-  bool keys = false;
+  bool keys = false, list_presets = false;
+  std::string preset;
   void add_to(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("scene", "print the complete default scene as JSON");
     cmd->add_flag("--keys", keys, "list every key with its meaning instead");
+    cmd->add_flag("--presets", list_presets, "list the presets of paper §9 instead");
+    cmd->add_option("--preset", preset, "print the complete scene a preset makes");
     cmd->callback([this] {
-      if (!keys) {
-        std::cout << to_json(Scene{}).dump(2) << "\n";
+      if (list_presets) {
+        for (const Preset& p : presets()) std::cout << p.name << "\t" << p.about << "\n";
         return;
       }
-      for (const Field& f : scene_fields()) std::cout << f.path << "\t" << f.help << "\n";
+      if (keys) {
+        for (const Field& f : scene_fields()) std::cout << f.path << "\t" << f.help << "\n";
+        return;
+      }
+      Scene s;
+      if (!preset.empty()) apply_setting(s, "preset=" + json(preset).dump());
+      std::cout << to_json(s).dump(2) << "\n";
     });
   }
 };

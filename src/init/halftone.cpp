@@ -76,18 +76,4 @@ GrainSet halftone(const Scene& s, const cv::Mat& lum) {
   return g;
 }
 
-Initialization initialize(const Scene& s) {
-  Initialization init;
-  if (s.init.method == InitMethod::Halftone) {
-    cv::Mat img = read_image(s.resolve(s.init.image), "init.image");
-    init.input = luminance(img, s.window.width, s.region.height);
-    init.grains = halftone(s, init.input);
-    return init;
-  }
-  init.tessellation = tessellate(s);
-  init.grains = empty_region(s);
-  fill_cells(s, init.tessellation, init.grains);
-  return init;
-}
-
 }  // namespace sandpic

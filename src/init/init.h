@@ -14,6 +14,7 @@ namespace sandpic {
 struct Cell {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   int dominant = 0, secondary = 1;  // classes drawn by Algorithm 1
+  int area = 0;  // paper §10, Fig. 17: 0 the scene's own, else 1 + its area in s.regions
 };
 
 struct Tessellation {
@@ -42,6 +43,8 @@ struct Initialization {
   cv::Mat input;  // halftone input as luminance, for --stages
 };
 
+// The region's grains, with every area of s.regions (Fig. 17) initialized by
+// its own scene inside its rectangle; cells in window px, tagged by area.
 Initialization initialize(const Scene& s);
 
 }  // namespace sandpic

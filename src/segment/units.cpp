@@ -1,11 +1,13 @@
 // The falling units: automatic ellipses (paper §5.1, Fig. 6a), listed
-// ellipses, the tessellation's own cells (Fig. 4b, 5b), or ellipses under a
-// sketch (§5.2, src/segment/sketch.cpp).
+// ellipses, the tessellation's own cells (Fig. 4b, 5b), ellipses under a
+// sketch (§5.2, src/segment/sketch.cpp) or a regular pattern's rows (§10,
+// src/segment/pattern.cpp).
 #include <algorithm>
 #include <cmath>
 
 #include "src/errors.h"
 #include "src/rng.h"
+#include "src/segment/pattern.h"
 #include "src/segment/segment.h"
 #include "src/segment/sketch.h"
 
@@ -32,6 +34,11 @@ double Unit::distance_outside(const Vec2& p) const {
   if (is_ellipse) return ellipse.distance_outside(p);
   double dx = std::max({x0 - p.x(), 0.0, p.x() - x1}), dy = std::max({y0 - p.y(), 0.0, p.y() - y1});
   return std::hypot(dx, dy);
+}
+
+void Unit::shift(const Vec2& d) {
+  ellipse.c += d;
+  x0 += d.x(), x1 += d.x(), y0 += d.y(), y1 += d.y();
 }
 
 namespace {
@@ -79,6 +86,8 @@ std::vector<Unit> make_units(const Scene& s, const Tessellation& t) {
       return automatic_ellipses(s);
     case SegmentMethod::Sketch:
       return sketch_units(s, scene_sketch(s));
+    case SegmentMethod::Pattern:
+      return pattern_units(s);
     case SegmentMethod::Explicit:
       for (const EllipseSpec& e : s.segment.ellipses) units.push_back(ellipse_unit(Ellipse::from(e)));
       return units;
