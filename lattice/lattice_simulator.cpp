@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "src/errors.h"
+#include "src/frames.h"
 #include "src/release.h"
 
 namespace sandpic {
@@ -40,6 +41,14 @@ namespace {
 
 double columns_per_px_of(const Scene& s, int columns) { return columns / double(s.window.width); }
 
+// paper Fig. 14c-d: the pile so far, and the grains after the first
+// `released` of the falling order still at their places in the region.
+void emit_frame(const SimInput& in, const HeightField& field, int64_t released, FrameSchedule& schedule) {
+  cv::Mat map = field.class_map(in.scene.window.width, in.scene.window.height, kNoSand);
+  draw_waiting(map, in.grains, std::span<const int32_t>(in.order.grain).subspan(size_t(released)));
+  for (; schedule.due(released); ++schedule.next) in.frames.frame(map);
+}
+
 class LatticeSimulator final : public Simulator {
  public:
   SimResult simulate(const SimInput& in, Progress& progress) override {
@@ -74,6 +83,8 @@ class LatticeSimulator final : public Simulator {
     out.x.assign(size_t(in.grains.size()), NAN);
     out.y.assign(size_t(in.grains.size()), NAN);
     progress.start("lattice", int64_t(in.order.grain.size()));
+    FrameSchedule schedule{int64_t(in.order.grain.size()), in.frames.wanted() ? in.frames.count : 0};
+    if (schedule.due(0)) emit_frame(in, field, 0, schedule);
     // Sequential on purpose: each grain lands on the surface the previous
     // ones made.
     for (size_t u = 0; u < in.seg.units.size(); ++u) {
@@ -85,15 +96,18 @@ class LatticeSimulator final : public Simulator {
         c = field.settle(c, rule_of[k], seed, uint64_t(id));
         double rise = area[k] * columns_per_px;
         if (field.height(c) + rise > H) c = field.room_near(c, rise);
-        if (c < 0) continue;  // no room anywhere: the grain stays unaccounted (NaN)
-        double centre = field.deposit(c, k, area[k]);
-        out.x[size_t(id)] = float((c + 0.5) / columns_per_px);
-        out.y[size_t(id)] = float(H - centre);
+        if (c >= 0) {  // else no room anywhere: the grain stays unaccounted (NaN)
+          double centre = field.deposit(c, k, area[k]);
+          out.x[size_t(id)] = float((c + 0.5) / columns_per_px);
+          out.y[size_t(id)] = float(H - centre);
+        }
+        if (schedule.due(i + 1)) emit_frame(in, field, i + 1, schedule);
       }
       progress.update(in.order.unit_begin[u + 1]);
     }
     progress.finish();
     out.class_map = field.class_map(W, H, kNoSand);
+    if (schedule.count > 0) in.frames.frame(out.class_map);  // the last frame is the picture
     out.stats["columns"] = columns;
     out.stats["pile_max_height_px"] = field.max_height();
     for (int k = 0; k < kClasses; ++k) {

@@ -1,5 +1,5 @@
 // The DEM backend. Each step is a short fixed list of named stages:
-//   release → insert → water → step (Bullet) → [every cycle] classify → freeze → guard
+//   release → insert → water → step (Bullet) → [--frames] frame → [every cycle] classify → freeze → guard
 // paper §7: release toward each unit's outlet; §8.1: the three-layer model.
 #include "physics/dem_simulator.h"
 
@@ -14,6 +14,7 @@
 #include "physics/water.h"
 #include "physics/world.h"
 #include "src/errors.h"
+#include "src/frames.h"
 #include "src/release.h"
 
 namespace sandpic {
@@ -49,6 +50,8 @@ class DemRun {
   void classify_stage();
   void freeze_stage();
   void guard_stage();
+  void frame_stage();
+  cv::Mat frame_map() const;
   void record(int32_t id, Vec2 p);
   void make_static(int32_t id, Vec2 p);
   double surface(double x, double r) const;
@@ -90,6 +93,7 @@ class DemRun {
   size_t peak_bodies_ = 0;
   ordered_json samples_ = ordered_json::array();
   cv::Mat layer_snapshot_;
+  FrameSchedule frames_;
   Crowding crowding_;  // insert_stage's neighbourhood index
 };
 
@@ -110,6 +114,7 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
       world_(W_, H_, radius_, mass_,
              GrainMaterial{in.scene.physics.friction, in.scene.physics.restitution, in.scene.dem.rolling_resistance,
                            in.scene.dem.solver_iterations, dem_bounce_speed(water_, dt_)}),
+      frames_{n_, in.frames.wanted() ? in.frames.count : 0},
       crowding_(W_, H_) {
   small_d_ = 1e9;
   for (int k = 0; k < kClasses; ++k) {
@@ -352,6 +357,42 @@ void DemRun::sample_layers() {
                       {"fixed", fixed_}});
 }
 
+// paper Fig. 14c-d: the grains as they are now. Fixed and static ones where
+// they settled, bodies where Bullet has them, released grains not yet bodies
+// on their way (Eq. 1-2 to the outlet, then straight down at their settling
+// speed, as release_stage schedules them), the rest waiting in the region.
+// Reads the run only: frames never change a picture.
+cv::Mat DemRun::frame_map() const {
+  std::vector<float> x(x_), y(y_);
+  for (int32_t id : dynamic_) {
+    const Vec2 p = world_.position(slot_[size_t(id)]);
+    x[size_t(id)] = float(p.x()), y[size_t(id)] = float(H_ - p.y());
+  }
+  for (int64_t i = 0; i < released_; ++i) {
+    const int32_t id = in_.order.grain[size_t(i)];
+    if (layer_[size_t(id)] != Layer::Waiting) continue;
+    const int k = in_.grains.cls[size_t(id)];
+    const Outlet& o = outlets_[size_t(unit_of_order_[size_t(i)])];
+    const ReleasePath path = release(model_, o, in_.grains, id);
+    const double since = t_ - double(i) / s_.dem.release_rate;
+    Vec2 p(path.exit_x, o.centre.y() + water_.terminal_px_s[k] * (since - path.t));  // y down
+    if (since < path.t) p = path.start + Vec2(path.vx * since, 0.5 * model_.gravity_px_s2 * since * since);
+    const double lowest = H_ - (surface(p.x(), radius_[k]) + s_.dem.insert_gap_diameters * 2 * radius_[k]);
+    x[size_t(id)] = float(p.x()), y[size_t(id)] = float(std::min(p.y(), lowest));
+  }
+  cv::Mat map = class_map_from_grains(W_, H_, x, y, in_.grains.cls, 1.2, kNoSand);
+  draw_waiting(map, in_.grains, std::span<const int32_t>(in_.order.grain).subspan(size_t(released_)));
+  return map;
+}
+
+// Stage (--frames only): a frame once its share of the grains has left the
+// region; the last one is the finished picture (run()).
+void DemRun::frame_stage() {
+  if (!frames_.due(released_)) return;
+  const cv::Mat map = frame_map();
+  for (; frames_.due(released_); ++frames_.next) in_.frames.frame(map);
+}
+
 // paper Fig. 2i, 11: dynamic grains red, static blue, fixed black.
 cv::Mat DemRun::layer_map() const {
   std::vector<float> x(x_), y(y_);
@@ -378,6 +419,7 @@ SimResult DemRun::run() {
   // n/rate, and settling gets a generous allowance after it.
   const double limit = double(n_) / s_.dem.release_rate + 60.0 + 2000 * cycle * dt_;
   progress_.start("dem", n_);
+  frame_stage();  // frame 0: every grain still in the region
   while (released_ < n_ || !arrivals_.empty() || !dynamic_.empty()) {
     release_stage();
     insert_stage();
@@ -385,6 +427,7 @@ SimResult DemRun::run() {
     world_.step(dt_);
     t_ += dt_;
     ++steps_;
+    frame_stage();
     if (steps_ % cycle) continue;
     classify_stage();
     freeze_stage();
@@ -418,6 +461,7 @@ SimResult DemRun::run() {
   out.y = y_;
   std::vector<uint8_t> cls(in_.grains.cls.begin(), in_.grains.cls.end());
   out.class_map = class_map_from_grains(W_, H_, x_, y_, cls, 1.2, kNoSand);
+  if (frames_.count > 0) in_.frames.frame(out.class_map);  // the last frame is the picture
   if (!layer_snapshot_.empty()) out.stages.emplace_back("6-layers.png", layer_snapshot_);
   if (in_.stages) out.stages.emplace_back("7-layers-end.png", layer_map());
   // Thin the samples to about 200 for the stats.

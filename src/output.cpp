@@ -21,6 +21,17 @@ std::string folder_of(const std::string& path) {
   fs::path p(path);
   return p.has_parent_path() ? p.parent_path().string() : ".";
 }
+
+// What a new file or folder gets: mkstemp and mkdtemp make them private.
+mode_t public_mode(bool folder) {
+  mode_t mask = umask(0);
+  umask(mask);
+  return (folder ? 0777 : 0666) & ~mask;
+}
+
+[[noreturn]] void cannot_write(const std::string& path, int err) {
+  throw InputError("cannot write '" + path + "': " + std::strerror(err));
+}
 }  // namespace
 
 std::optional<std::string> read_text(const std::string& path) {
@@ -61,14 +72,32 @@ void write_atomic(const std::string& path, std::string_view bytes) {
     }
     done += size_t(n);
   }
-  mode_t mask = umask(0);
-  umask(mask);
-  fchmod(fd, 0666 & ~mask);
+  fchmod(fd, public_mode(false));
   if (close(fd) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
     int err = errno;
     unlink(tmp.c_str());
     throw InputError("cannot write '" + path + "': " + std::strerror(err));
   }
+}
+
+std::string temp_folder_beside(const std::string& path) {
+  std::string tmp = path + ".tmp-XXXXXX";
+  if (!mkdtemp(tmp.data())) cannot_write(path, errno);
+  return tmp;
+}
+
+std::string temp_file_beside(const std::string& path) {
+  const std::string ext = fs::path(path).extension().string();
+  std::string tmp = path + ".tmp-XXXXXX" + ext;
+  int fd = mkstemps(tmp.data(), int(ext.size()));
+  if (fd < 0) cannot_write(path, errno);
+  close(fd);
+  return tmp;
+}
+
+void move_into_place(const std::string& tmp, const std::string& path) {
+  if (chmod(tmp.c_str(), public_mode(fs::is_directory(tmp))) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0)
+    cannot_write(path, errno);
 }
 
 }  // namespace sandpic

@@ -1,5 +1,6 @@
 #include "src/pipeline.h"
 
+#include <cassert>
 #include <chrono>
 #include <cmath>
 
@@ -54,8 +55,20 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
   timing["order_s"] = clock.lap();
 
   Progress progress(opt.progress);
-  SimResult sim_result = sim.simulate(SimInput{s, init.grains, seg, order, opt.stages}, progress);
+  SimInput in{s, init.grains, seg, order, opt.stages};
+  int frames = 0;
+  double frames_s = 0;  // a part of simulate_s
+  if (opt.frames > 0 && opt.frame)
+    in.frames = {opt.frames, [&](const cv::Mat& class_map) {
+                   const auto start = std::chrono::steady_clock::now();
+                   opt.frame(render(s, class_map, background, figures));
+                   ++frames;
+                   frames_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                 }};
+  SimResult sim_result = sim.simulate(in, progress);
   timing["simulate_s"] = clock.lap();
+  timing["frames_s"] = frames_s;
+  assert(frames == (in.frames.wanted() ? opt.frames : 0));
 
   const int64_t total = init.grains.size(), in_picture = grains_in_picture(s, sim_result);
   if (in_picture != total)
@@ -91,6 +104,7 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
   st["window"] = {s.window.width, s.window.height};
   st["region"] = {s.window.width, s.region.height};
   st["units"] = seg.units.size();
+  st["frames"] = frames;
   st["grains"]["total"] = total;
   st["grains"]["per_class"] = init.grains.per_class();
   st["grains"]["released"] = int64_t(order.grain.size());

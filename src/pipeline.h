@@ -1,6 +1,7 @@
 #pragma once
 // The pipeline: initialize → segment → order → simulate → render, each a free
 // function over plain data, timed into the stats (paper Table 1's columns).
+#include <functional>
 #include <vector>
 
 #include "src/simulator.h"
@@ -11,6 +12,12 @@ namespace sandpic {
 struct RunOptions {
   bool stages = false;    // keep the intermediate pictures of Fig. 2
   bool progress = false;  // draw a progress bar on stderr
+  // paper Fig. 14c-d: `frames` pictures of the fall (8-bit BGR, window
+  // size, drawn as the final picture is), handed to `frame` one at a time
+  // as the backend makes them: the caller streams them out. The last one is
+  // the picture. 0 or no `frame`: none, at no cost.
+  int frames = 0;
+  std::function<void(const cv::Mat& picture)> frame = nullptr;
 };
 
 struct RunResult {

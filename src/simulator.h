@@ -1,6 +1,7 @@
 #pragma once
 // The one interface through which src/ knows a simulation backend (lattice/,
 // physics/). A backend turns released grains into a settled picture.
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -14,12 +15,25 @@ namespace sandpic {
 
 constexpr uint8_t kNoSand = 255;  // class_map value where no grain lies
 
+// paper Fig. 14c-d, 18b-c: screen shots of the fall while it goes. A backend
+// with `count` > 0 calls `frame` exactly `count` times, with a window-size
+// class map (CV_8U, class 0..3 or kNoSand) of the pile, the moving grains
+// and the grains still waiting in the region: first before any grain is
+// released, then evenly spaced by grains released (frame_released), last
+// with the very class map it returns.
+struct FrameSink {
+  int count = 0;
+  std::function<void(const cv::Mat& class_map)> frame;
+  bool wanted() const { return count > 0 && frame; }
+};
+
 struct SimInput {
   const Scene& scene;
   const GrainSet& grains;
   const Segmentation& seg;
   const FallingOrder& order;
   bool stages = false;  // --stages: the backend draws its own pictures
+  FrameSink frames = {};
 };
 
 struct SimResult {

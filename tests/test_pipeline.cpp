@@ -5,6 +5,7 @@
 #include <tbb/global_control.h>
 
 #include "src/pipeline.h"
+#include "src/render.h"
 #include "src/scene_file.h"
 
 namespace sandpic {
@@ -80,6 +81,54 @@ TEST(Pipeline, BackgroundFillsTheEmptiedUpperPart) {
   s.render.background = path;
   RunResult r = run(s);
   EXPECT_EQ(r.picture.at<cv::Vec3b>(0, 0), cv::Vec3b(0, 0, 255));
+}
+
+// paper Fig. 14c-d: frames of the fall, drawn as the picture is.
+struct Fall {
+  RunResult run;
+  std::vector<cv::Mat> frames;
+};
+Fall fall(const Scene& s, int count) {
+  Fall f;
+  RunOptions opt;
+  opt.frames = count;
+  opt.frame = [&](const cv::Mat& picture) { f.frames.push_back(picture.clone()); };
+  f.run = run_pipeline(s, *make_simulator(s), opt);
+  return f;
+}
+
+TEST(PipelineFrames, FromAFullRegionToThePicture) {
+  const Scene s = preview();
+  Fall f = fall(s, 7);
+  ASSERT_EQ(f.frames.size(), 7u);
+  EXPECT_EQ(f.run.stats["frames"], 7);
+  const cv::Vec3b blank = bgr(s.render.background_color);
+  const cv::Mat& first = f.frames.front();
+  int region_blank = 0, floor_sand = 0;
+  for (int y = 0; y < first.rows; ++y)
+    for (int x = 0; x < first.cols; ++x) {
+      const bool is_blank = first.at<cv::Vec3b>(y, x) == blank;
+      if (y < s.region.height) region_blank += is_blank;
+      else floor_sand += !is_blank;
+    }
+  EXPECT_EQ(region_blank, 0);  // every grain at its place
+  EXPECT_EQ(floor_sand, 0);    // nothing fallen yet
+  EXPECT_EQ(cv::norm(f.frames.back(), f.run.picture, cv::NORM_INF), 0);
+  for (size_t i = 1; i + 1 < f.frames.size(); ++i) EXPECT_GT(cv::norm(f.frames[i], f.frames[i - 1], cv::NORM_L1), 0) << i;
+}
+
+TEST(PipelineFrames, SameSeedSameFramesAndTheSamePicture) {
+  const Scene s = preview();
+  Fall a = fall(s, 5), b = fall(s, 5);
+  ASSERT_EQ(a.frames.size(), b.frames.size());
+  for (size_t i = 0; i < a.frames.size(); ++i) EXPECT_EQ(cv::norm(a.frames[i], b.frames[i], cv::NORM_INF), 0) << i;
+  EXPECT_EQ(a.run.png, run(s).png);  // frames never change the picture
+}
+
+TEST(PipelineFrames, NoneUnlessAsked) {
+  Fall f = fall(preview(), 0);
+  EXPECT_TRUE(f.frames.empty());
+  EXPECT_EQ(f.run.stats["frames"], 0);
 }
 
 }  // namespace

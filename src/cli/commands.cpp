@@ -15,6 +15,7 @@
 #include <tbb/global_control.h>
 
 #include "src/cli/cli_common.h"
+#include "src/cli/frame_output.h"
 #include "src/errors.h"
 #include "src/output.h"
 #include "src/pipeline.h"
@@ -43,7 +44,9 @@ namespace {
 
 struct RenderCommand {
   SceneOptions scene;
-  std::string out, stats, stages;
+  std::string out, stats, stages, frames, video;
+  int frame_count = 60;
+  double fps = 24;
 
   void add_to(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("render", "render a scene to a PNG picture");
@@ -51,18 +54,34 @@ struct RenderCommand {
     cmd->add_option("-o,--out", out, "output PNG")->required();
     cmd->add_option("--stats", stats, "write statistics (grain counts, timings) as JSON");
     cmd->add_option("--stages", stages, "write the intermediate pictures of paper Fig. 2 into this folder");
+    cmd->add_option("--frames", frames, "write pictures of the fall (paper Fig. 14c-d) as frame-00000.png, ... into this folder");
+    cmd->add_option("--video", video, "write the pictures of the fall as an MP4 video (mp4v)");
+    cmd->add_option("--frame-count", frame_count, "frames of the fall, evenly spaced by grains released; the last is the picture")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    cmd->add_option("--fps", fps, "frames per second of --video")->check(CLI::Range(0.1, 1000.0))->capture_default_str();
     cmd->callback([this] { run(); });
   }
 
   void run() {
     Scene s = scene.build();
-    while (stages.size() > 1 && stages.back() == '/') stages.pop_back();
+    for (std::string* dir : {&stages, &frames})
+      while (dir->size() > 1 && dir->back() == '/') dir->pop_back();
     check_writable(out);
     if (!stats.empty()) check_writable(stats);
     if (!stages.empty() && !std::filesystem::is_directory(stages)) check_writable(stages);
     auto threads = limit_threads(scene.threads);
     auto sim = make_simulator(s);
-    RunOptions opt{!stages.empty(), Progress::stderr_is_terminal()};
+    RunOptions opt;
+    opt.stages = !stages.empty();
+    opt.progress = Progress::stderr_is_terminal();
+    // Streamed into temporaries as they come; moved into place at the end.
+    std::unique_ptr<FrameOutput> fall;
+    if (!frames.empty() || !video.empty()) {
+      fall = std::make_unique<FrameOutput>(frames, video, cv::Size(s.window.width, s.window.height), fps);
+      opt.frames = frame_count;
+      opt.frame = [&](const cv::Mat& picture) { fall->write(picture); };
+    }
     RunResult r;
     try {
       r = run_pipeline(s, *sim, opt);
@@ -77,6 +96,7 @@ struct RenderCommand {
     write_atomic(out, std::string_view(reinterpret_cast<const char*>(r.png.data()), r.png.size()));
     if (!stats.empty()) write_atomic(stats, r.stats.dump(2) + "\n");
     for (auto& [name, img] : r.stages) write_png(stages + "/" + name, img);
+    if (fall) fall->commit();
   }
 };
 

@@ -53,6 +53,26 @@ expect 2 "compare missing" -- "$BIN" compare "$T/a.png" "$T/none.png"
 one_line; err_has "none.png"
 if ! cmp -s "$T/a.png" "$T/c.png"; then ok; else bad "another seed gave the same picture"; fi
 
+# paper Fig. 14c-d: frames of the fall, the last one the picture; a video of them.
+expect 0 "frames" -- "$BIN" render -o "$T/fr.png" --scale 0.25 --frames "$T/frames/" --frame-count 12 \
+  --video "$T/fall.mp4" --stats "$T/fr.json"
+if [ "$(ls "$T/frames" | wc -l)" = 12 ]; then ok; else bad "frames: $(ls "$T/frames")"; fi
+is_png "$T/frames/frame-00000.png"
+if cmp -s "$T/frames/frame-00011.png" "$T/fr.png"; then ok; else bad "the last frame is not the picture"; fi
+if cmp -s "$T/fr.png" "$T/a.png"; then ok; else bad "frames changed the picture"; fi
+if [ -s "$T/fall.mp4" ] && [ "$(head -c 8 "$T/fall.mp4" | tail -c 4)" = ftyp ]; then ok; else bad "fall.mp4 is not an MP4"; fi
+if grep -q '"frames": 12' "$T/fr.json"; then ok; else bad "stats lack the frames: $(cat "$T/fr.json")"; fi
+expect 0 "frames again" -- "$BIN" render -o "$T/fr2.png" --scale 0.25 --frames "$T/frames2" --frame-count 12
+if diff -rq "$T/frames" "$T/frames2" >/dev/null; then ok; else bad "same seed gave other frames"; fi
+if ls "$T" | grep -q tmp-; then bad "temporaries left: $(ls "$T")"; else ok; fi
+echo keep >"$T/framesfile"
+expect 2 "frames into a file" -- "$BIN" render -o "$T/e.png" --scale 0.25 --frames "$T/framesfile"
+one_line; err_has "--frames"; absent "$T/e.png"
+expect 2 "no frames" -- "$BIN" render -o "$T/e.png" --scale 0.25 --frames "$T/f0" --frame-count 0
+one_line; err_has "--frame-count"; absent "$T/f0"
+expect 2 "video container" -- "$BIN" render -o "$T/e.png" --scale 0.25 --video "$T/fall.nosuch"
+one_line; err_has "--video"; absent "$T/e.png"; absent "$T/fall.nosuch"
+
 # The benchmark prints a median per stage.
 expect 0 "bench" -- "$BIN" bench --runs 2 --scale 0.2
 for k in init_s segment_s simulate_s render_s total_s "grains per second"; do
@@ -103,8 +123,12 @@ if [ "$BULLET" = with-bullet ]; then
   is_png "$T/dem.png"; is_png "$T/dst/6-layers.png"; is_png "$T/dst/7-layers-end.png"
   if grep -q '"in_picture": 300' "$T/dem.json"; then ok; else bad "dem stats: $(cat "$T/dem.json")"; fi
   echo keep >"$T/keep.png"
-  expect 3 "dem divergence" -- "$BIN" render -o "$T/keep.png" --mode dem "${TINY[@]}" --set dem.max_overlap=0.01
-  one_line; err_has "overlap"; err_has "physics seed"
+  expect 3 "dem divergence" -- "$BIN" render -o "$T/keep.png" --mode dem "${TINY[@]}" --set dem.max_overlap=0.01 \
+    --frames "$T/dfr" --video "$T/dfr.mp4"
+  one_line; err_has "overlap"; err_has "physics seed"; absent "$T/dfr"; absent "$T/dfr.mp4"
+  if ls "$T" | grep -q tmp-; then bad "a diverged run left temporaries: $(ls "$T")"; else ok; fi
+  expect 0 "dem frames" -- "$BIN" render -o "$T/dem2.png" --mode dem "${TINY[@]}" --frames "$T/dfr" --frame-count 5
+  if [ "$(ls "$T/dfr" | wc -l)" = 5 ] && cmp -s "$T/dfr/frame-00004.png" "$T/dem2.png"; then ok; else bad "dem frames: $(ls "$T/dfr")"; fi
   if [ "$(cat "$T/keep.png")" = keep ]; then ok; else bad "a diverged run overwrote the output"; fi
   # paper Fig. 12: the layer models side by side, as a table, CSV and plot.
   expect 0 "bench-layers" -- "$BIN" bench-layers "${TINY[@]}" --grains 100,200 --seeds 1,2 --all-dynamic-max 100 \

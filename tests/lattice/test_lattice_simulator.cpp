@@ -5,6 +5,8 @@
 
 #include "lattice/lattice_simulator.h"
 #include "src/errors.h"
+#include "src/frames.h"
+#include "src/init/init.h"
 #include "src/pipeline.h"
 #include "tests/test_util.h"
 
@@ -73,6 +75,36 @@ TEST(LatticeSimulator, EveryGrainSettlesInThePicture) {
   RunResult r = run_pipeline(s, *sim, RunOptions{});
   EXPECT_EQ(r.stats["grains"]["in_picture"], r.stats["grains"]["total"]);
   EXPECT_EQ(r.stats["grains"]["total"].get<int64_t>(), 400 * 80);
+}
+
+// paper Fig. 14c-d: in every frame each grain is either waiting at its
+// pixel in the region or part of the pile: the region holds exactly the
+// grains not yet released, and the pile the area of those released (to a
+// pixel per column: the class map samples pixel centres).
+TEST(LatticeSimulator, FramesAccountForEveryGrain) {
+  const Scene s = test::one_ellipse_scene();
+  Initialization init = initialize(s);
+  Segmentation seg = segment(s, init.tessellation);
+  FallingOrder order = falling_order(seg, init.grains, s.layout());
+  std::vector<cv::Mat> frames;
+  SimInput in{s, init.grains, seg, order};
+  in.frames = {9, [&](const cv::Mat& m) { frames.push_back(m.clone()); }};
+  Progress quiet(false);
+  SimResult r = make_lattice_simulator()->simulate(in, quiet);
+  ASSERT_EQ(frames.size(), 9u);
+  EXPECT_EQ(cv::norm(frames.back(), r.class_map, cv::NORM_INF), 0);
+  const int64_t total = init.grains.size();
+  const cv::Rect region(0, 0, s.window.width, s.region.height);
+  const cv::Rect below(0, s.region.height, s.window.width, s.window.height - s.region.height);
+  double area = 0;
+  int64_t released = 0;
+  for (int k = 0; k < 9; ++k) {
+    for (int64_t end = frame_released(total, 9, k); released < end; ++released)
+      area += lattice_area_px(s, init.grains.cls[size_t(order.grain[size_t(released)])]);
+    const cv::Mat& f = frames[size_t(k)];
+    EXPECT_EQ(cv::countNonZero(f(region) != kNoSand), total - released) << "frame " << k;
+    EXPECT_NEAR(cv::countNonZero(f(below) != kNoSand), area, s.window.width) << "frame " << k;
+  }
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "physics/dem_simulator.h"
 #include "src/errors.h"
 #include "src/pipeline.h"
+#include "src/render.h"
 #include "tests/test_util.h"
 
 namespace sandpic {
@@ -85,6 +86,32 @@ TEST(DemSimulator, DivergenceIsReportedNotWritten) {
   Scene s = small_dem_scene();
   s.dem.max_overlap = 0.01;  // any real contact now counts as divergence
   EXPECT_THROW(run(s), SimulationError);
+}
+
+// paper Fig. 14c-d: the DEM's frames, from the full region to the picture,
+// never changing it.
+TEST(DemSimulator, FramesFromTheFullRegionToThePicture) {
+  const Scene s = small_dem_scene();
+  std::vector<cv::Mat> frames;
+  RunOptions opt;
+  opt.frames = 6;
+  opt.frame = [&](const cv::Mat& picture) { frames.push_back(picture.clone()); };
+  RunResult r = run_pipeline(s, *make_dem_simulator(), opt);
+  ASSERT_EQ(frames.size(), 6u);
+  EXPECT_EQ(r.stats["frames"], 6);
+  const cv::Mat& first = frames.front();
+  const cv::Vec3b blank = bgr(s.render.background_color);
+  int region_blank = 0, floor_sand = 0;
+  for (int y = 0; y < first.rows; ++y)
+    for (int x = 0; x < first.cols; ++x) {
+      const bool is_blank = first.at<cv::Vec3b>(y, x) == blank;
+      if (y < s.region.height) region_blank += is_blank;
+      else floor_sand += !is_blank;
+    }
+  EXPECT_EQ(region_blank, 0);
+  EXPECT_EQ(floor_sand, 0);
+  EXPECT_EQ(cv::norm(frames.back(), r.picture, cv::NORM_INF), 0);
+  EXPECT_EQ(r.png, run(s).png);
 }
 
 }  // namespace
