@@ -61,7 +61,13 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
   if (opt.frames > 0 && opt.frame)
     in.frames = {opt.frames, [&](const cv::Mat& class_map) {
                    const auto start = std::chrono::steady_clock::now();
-                   opt.frame(render(s, class_map, background, figures));
+                   if (s.render.symmetric && frames + 1 == opt.frames) {  // the last frame is the picture
+                     cv::Mat mirrored = class_map.clone();
+                     mirror_over(mirrored, kNoSand);
+                     opt.frame(render(s, mirrored, background, figures));
+                   } else {
+                     opt.frame(render(s, class_map, background, figures));
+                   }
                    ++frames;
                    frames_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                  }};

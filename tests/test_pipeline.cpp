@@ -125,6 +125,20 @@ TEST(PipelineFrames, SameSeedSameFramesAndTheSamePicture) {
   EXPECT_EQ(a.run.png, run(s).png);  // frames never change the picture
 }
 
+TEST(PipelineFrames, ASymmetricScenesLastFrameIsItsMirroredPicture) {
+  Scene s = preview();
+  s.render.symmetric = true;
+  Fall f = fall(s, 4);
+  ASSERT_EQ(f.frames.size(), 4u);
+  EXPECT_EQ(cv::norm(f.frames.back(), f.run.picture, cv::NORM_INF), 0);
+  // The picture is mirror-symmetric about its mirror row.
+  const int axis = f.run.stats["symmetric"]["mirror_row"];
+  ASSERT_GT(axis, 0);
+  ASSERT_LT(axis, s.window.height);
+  for (int i = 0; axis - 1 - i >= 0 && axis + i < s.window.height; ++i)
+    ASSERT_EQ(cv::norm(f.run.picture.row(axis - 1 - i), f.run.picture.row(axis + i), cv::NORM_INF), 0) << i;
+}
+
 TEST(PipelineFrames, NoneUnlessAsked) {
   Fall f = fall(preview(), 0);
   EXPECT_TRUE(f.frames.empty());
