@@ -36,6 +36,17 @@ int64_t grains_in_picture(const Scene& s, const SimResult& r) {
   return n;
 }
 
+// The classes the picture shows: the settled sand, with render.symmetric
+// its flipped copy laid over it (paper §10, Fig. 18c: a copy of the sand,
+// not new grains). mirror_row, if given, gets the mirror's row (-1: none).
+cv::Mat shown_classes(const Scene& s, const cv::Mat& class_map, int* mirror_row = nullptr) {
+  if (!s.render.symmetric) return class_map;
+  cv::Mat mirrored = class_map.clone();
+  const int row = mirror_over(mirrored, kNoSand);
+  if (mirror_row) *mirror_row = row;
+  return mirrored;
+}
+
 std::string mode_name(Mode m) { return m == Mode::Lattice ? "lattice" : "dem"; }
 
 }  // namespace
@@ -61,13 +72,8 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
   if (opt.frames > 0 && opt.frame)
     in.frames = {opt.frames, [&](const cv::Mat& class_map) {
                    const auto start = std::chrono::steady_clock::now();
-                   if (s.render.symmetric && frames + 1 == opt.frames) {  // the last frame is the picture
-                     cv::Mat mirrored = class_map.clone();
-                     mirror_over(mirrored, kNoSand);
-                     opt.frame(render(s, mirrored, background, figures));
-                   } else {
-                     opt.frame(render(s, class_map, background, figures));
-                   }
+                   const bool last = frames + 1 == opt.frames;  // the last frame is the picture
+                   opt.frame(render(s, last ? shown_classes(s, class_map) : class_map, background, figures));
                    ++frames;
                    frames_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                  }};
@@ -82,12 +88,8 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
                           " grains did not settle inside the window (seed " + std::to_string(s.seed) + ")");
 
   RunResult out;
-  out.class_map = sim_result.class_map;
   int mirror_row = -1;
-  if (s.render.symmetric) {  // paper §10, Fig. 18c: a copy of the picture's sand, not new grains
-    out.class_map = sim_result.class_map.clone();
-    mirror_row = mirror_over(out.class_map, kNoSand);
-  }
+  out.class_map = shown_classes(s, sim_result.class_map, &mirror_row);
   out.picture = render(s, out.class_map, background, figures);
   timing["render_s"] = clock.lap();
   if (!cv::imencode(".png", out.picture, out.png)) throw SimulationError("PNG encoding failed");

@@ -6,6 +6,7 @@
 
 #include "src/pipeline.h"
 #include "src/render.h"
+#include "tests/test_util.h"
 #include "src/scene_file.h"
 
 namespace sandpic {
@@ -102,15 +103,7 @@ TEST(PipelineFrames, FromAFullRegionToThePicture) {
   Fall f = fall(s, 7);
   ASSERT_EQ(f.frames.size(), 7u);
   EXPECT_EQ(f.run.stats["frames"], 7);
-  const cv::Vec3b blank = bgr(s.render.background_color);
-  const cv::Mat& first = f.frames.front();
-  int region_blank = 0, floor_sand = 0;
-  for (int y = 0; y < first.rows; ++y)
-    for (int x = 0; x < first.cols; ++x) {
-      const bool is_blank = first.at<cv::Vec3b>(y, x) == blank;
-      if (y < s.region.height) region_blank += is_blank;
-      else floor_sand += !is_blank;
-    }
+  const auto [region_blank, floor_sand] = test::first_frame_counts(s, f.frames.front());
   EXPECT_EQ(region_blank, 0);  // every grain at its place
   EXPECT_EQ(floor_sand, 0);    // nothing fallen yet
   EXPECT_EQ(cv::norm(f.frames.back(), f.run.picture, cv::NORM_INF), 0);

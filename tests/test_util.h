@@ -5,6 +5,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "src/render.h"
 #include "src/scene.h"
 #include "src/simulator.h"
 #include "validate/silhouette.h"
@@ -33,6 +34,23 @@ inline SimResult simulate_scene(const Scene& s, Simulator& sim) {
   FallingOrder order = falling_order(seg, init.grains, s.layout());
   Progress quiet(false);
   return sim.simulate(SimInput{s, init.grains, seg, order}, quiet);
+}
+
+// A picture's blank pixels in the region and sand pixels below it: a first
+// frame of the fall has none of either (every grain waiting at its place).
+struct FirstFrameCounts {
+  int region_blank = 0, floor_sand = 0;
+};
+inline FirstFrameCounts first_frame_counts(const Scene& s, const cv::Mat& picture) {
+  const cv::Vec3b blank = bgr(s.render.background_color);
+  FirstFrameCounts n;
+  for (int y = 0; y < picture.rows; ++y)
+    for (int x = 0; x < picture.cols; ++x) {
+      const bool is_blank = picture.at<cv::Vec3b>(y, x) == blank;
+      if (y < s.region.height) n.region_blank += is_blank;
+      else n.floor_sand += !is_blank;
+    }
+  return n;
 }
 
 // Sand height of every pixel column of a class map: validate/'s silhouette.

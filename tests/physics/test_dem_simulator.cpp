@@ -100,14 +100,7 @@ TEST(DemSimulator, FramesFromTheFullRegionToThePicture) {
   ASSERT_EQ(frames.size(), 6u);
   EXPECT_EQ(r.stats["frames"], 6);
   const cv::Mat& first = frames.front();
-  const cv::Vec3b blank = bgr(s.render.background_color);
-  int region_blank = 0, floor_sand = 0;
-  for (int y = 0; y < first.rows; ++y)
-    for (int x = 0; x < first.cols; ++x) {
-      const bool is_blank = first.at<cv::Vec3b>(y, x) == blank;
-      if (y < s.region.height) region_blank += is_blank;
-      else floor_sand += !is_blank;
-    }
+  const auto [region_blank, floor_sand] = test::first_frame_counts(s, first);
   EXPECT_EQ(region_blank, 0);
   EXPECT_EQ(floor_sand, 0);
   EXPECT_EQ(cv::norm(frames.back(), r.picture, cv::NORM_INF), 0);
