@@ -42,11 +42,15 @@ std::optional<std::string> read_text(const std::string& path) {
   return buf.str();
 }
 
-void check_writable(const std::string& path) {
+void check_parent_writable(const std::string& path) {
   if (path.empty()) throw InputError("an output path is empty");
   std::string dir = folder_of(path);
   if (!fs::is_directory(dir)) throw InputError("cannot write '" + path + "': folder '" + dir + "' does not exist");
   if (access(dir.c_str(), W_OK) != 0) throw InputError("cannot write '" + path + "': folder '" + dir + "' is not writable");
+}
+
+void check_writable(const std::string& path) {
+  check_parent_writable(path);
   if (fs::is_directory(path)) throw InputError("cannot write '" + path + "': it is a folder");
 }
 

@@ -10,6 +10,9 @@ namespace sandpic {
 
 // Throws InputError naming the path if its folder is missing or not writable.
 void check_writable(const std::string& path);
+// The part of check_writable a new folder needs too: its own folder exists
+// and is writable.
+void check_parent_writable(const std::string& path);
 void check_folder(const std::string& dir);  // creates it if missing
 void write_atomic(const std::string& path, std::string_view bytes);
 // For outputs written over a run (--frames, --video): a new empty folder,

@@ -27,10 +27,11 @@ namespace {
 // be writable; it may exist already (frames replace the frame-*.png in it).
 void check_frames_folder(const std::string& dir) {
   if (fs::exists(dir) && !fs::is_directory(dir)) throw InputError("--frames: '" + dir + "' is a file, not a folder");
-  const fs::path p(dir);
-  const std::string parent = p.has_parent_path() ? p.parent_path().string() : ".";
-  if (!fs::is_directory(parent) || access(parent.c_str(), W_OK) != 0)
-    throw InputError("--frames: cannot write '" + dir + "': folder '" + parent + "' is missing or not writable");
+  try {
+    check_parent_writable(dir);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--frames: ") + e.what());
+  }
   if (fs::is_directory(dir) && access(dir.c_str(), W_OK) != 0)
     throw InputError("--frames: cannot write into folder '" + dir + "'");
 }
