@@ -9,6 +9,7 @@
 #include <queue>
 
 #include "physics/crowding.h"
+#include "physics/dem_cost.h"
 #include "physics/layers.h"
 #include "physics/raster.h"
 #include "physics/water.h"
@@ -485,6 +486,7 @@ SimResult DemRun::run() {
 class DemSimulator final : public Simulator {
  public:
   SimResult simulate(const SimInput& in, Progress& progress) override { return DemRun(in, progress).run(); }
+  Cost cost(const Scene& s) const override { return dem_cost(s); }
 };
 
 }  // namespace

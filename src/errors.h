@@ -19,4 +19,10 @@ struct SimulationError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A check that caught sandpic breaking one of its own promises (sandpic
+// stress): exit code 1.
+struct CheckFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace sandpic

@@ -54,6 +54,8 @@ std::string mode_name(Mode m) { return m == Mode::Lattice ? "lattice" : "dem"; }
 RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt) {
   validate(given);
   const Scene s = given.mode == Mode::Lattice ? with_calibration(given) : given;
+  const Estimate estimate = estimate_run(s, sim);
+  check_estimate(estimate, opt.limits);
   Clock clock;
   ordered_json timing;
   cv::Mat background = load_background(s);  // read early: a bad file fails before the work
@@ -119,6 +121,7 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
   st["grains"]["in_picture"] = in_picture;
   if (mirror_row >= 0) st["symmetric"]["mirror_row"] = mirror_row;
   st["timing"] = timing;
+  st["estimate"] = {{"bytes", estimate.bytes}, {"seconds", estimate.seconds}};
   st["backend"] = sim_result.stats;
   return out;
 }

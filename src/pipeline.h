@@ -4,6 +4,7 @@
 #include <functional>
 #include <vector>
 
+#include "src/estimate.h"
 #include "src/simulator.h"
 #include "src/stages.h"
 
@@ -18,6 +19,7 @@ struct RunOptions {
   // the picture. 0 or no `frame`: none, at no cost.
   int frames = 0;
   std::function<void(const cv::Mat& picture)> frame = nullptr;
+  Limits limits = {};  // checked against estimate_run before anything is allocated
 };
 
 struct RunResult {

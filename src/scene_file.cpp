@@ -66,6 +66,45 @@ std::string where(const std::string& text, size_t byte) {
   return "line " + std::to_string(line) + ", column " + std::to_string(col);
 }
 
+// nlohmann refuses a number past a double's range (1e999) with an
+// out_of_range error that says neither where nor which key; its SAX parser
+// gives the byte it stopped at, and this one keeps the key path to it.
+struct KeyPathSax : nlohmann::json_sax<json> {
+  struct Level {
+    bool array;
+    long index;
+    std::string key;
+  };
+  std::vector<Level> levels;
+  size_t stopped_at = 0;
+  std::string path() const {
+    std::string p;
+    for (const Level& l : levels)
+      p += l.array ? "[" + std::to_string(l.index) + "]" : (p.empty() ? "" : ".") + l.key;
+    return p;
+  }
+  bool value() {
+    if (!levels.empty() && levels.back().array) ++levels.back().index;
+    return true;
+  }
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(size_t) override { return value(), levels.push_back({false, -1, ""}), true; }
+  bool key(string_t& k) override { return levels.back().key = k, true; }
+  bool end_object() override { return levels.pop_back(), true; }
+  bool start_array(size_t) override { return value(), levels.push_back({true, -1, ""}), true; }
+  bool end_array() override { return levels.pop_back(), true; }
+  bool parse_error(size_t position, const std::string&, const nlohmann::detail::exception&) override {
+    stopped_at = position;
+    return false;
+  }
+};
+
 json scaled(const json& v, double f, const std::string& path) {
   if (v.is_number_integer()) return json(static_cast<long long>(std::max(1.0, std::round(v.get<double>() * f))));
   if (v.is_number()) return json(v.get<double>() * f);
@@ -145,7 +184,15 @@ Scene load_scene(const std::string& path) {
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    throw InputError("scene file '" + path + "': malformed JSON at " + where(text, e.byte > 0 ? e.byte - 1 : 0));
+    // nlohmann's reason follows "... while parsing <what> - ".
+    const std::string what = e.what(), reason = what.substr(std::min(what.size(), what.find(" - ") + 3));
+    throw InputError("scene file '" + path + "': malformed JSON at " + where(text, e.byte > 0 ? e.byte - 1 : 0) +
+                     (reason.empty() ? "" : ": " + reason));
+  } catch (const json::out_of_range&) {  // a number past a double's range
+    KeyPathSax sax;
+    json::sax_parse(text, &sax);
+    throw InputError("scene file '" + path + "': scene key '" + sax.path() + "': a number too large for a double, at " +
+                     where(text, sax.stopped_at > 0 ? sax.stopped_at - 1 : 0));
   }
   Scene s;
   size_t slash = path.rfind('/');

@@ -43,10 +43,18 @@ struct SimResult {
   std::vector<std::pair<std::string, cv::Mat>> stages;  // the backend's own --stages pictures
 };
 
+// What a backend's own part of a run will take, known from the scene alone
+// (issue 6: a scene past the limits is refused before anything is allocated).
+struct Cost {
+  double bytes = 0;    // peak memory beyond the pipeline's own
+  double seconds = 0;  // on 2 cores, order of magnitude
+};
+
 class Simulator {
  public:
   virtual ~Simulator() = default;
   virtual SimResult simulate(const SimInput& in, Progress& progress) = 0;
+  virtual Cost cost(const Scene& s) const = 0;
 };
 
 // Chosen in one place (src/cli/backends.cpp), from scene.mode.

@@ -91,5 +91,7 @@ void write_png(const std::string& path, const cv::Mat& img);
 std::unique_ptr<tbb::global_control> limit_threads(int n);
 // sandpic validate and sandpic calibrate; the returned object owns them.
 std::shared_ptr<void> add_validation_commands(CLI::App& app);
+// sandpic stress (issue 6).
+std::shared_ptr<void> add_stress_command(CLI::App& app);
 
 }  // namespace sandpic

@@ -46,7 +46,7 @@ struct RenderCommand {
   SceneOptions scene;
   std::string out, stats, stages, frames, video;
   int frame_count = 60;
-  double fps = 24;
+  double fps = 24, max_memory_gb = 0, max_hours = 24;
 
   void add_to(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("render", "render a scene to a PNG picture");
@@ -60,6 +60,12 @@ struct RenderCommand {
         ->check(CLI::Range(1, 100000))
         ->capture_default_str();
     cmd->add_option("--fps", fps, "frames per second of --video")->check(CLI::Range(0.1, 1000.0))->capture_default_str();
+    cmd->add_option("--max-memory-gb", max_memory_gb,
+                    "refuse a scene estimated to need more memory (0: three quarters of this machine's)")
+        ->check(CLI::Range(0.0, 1e6));
+    cmd->add_option("--max-hours", max_hours, "refuse a scene estimated to take longer to simulate")
+        ->check(CLI::Range(0.0, 1e6))
+        ->capture_default_str();
     cmd->callback([this] { run(); });
   }
 
@@ -75,6 +81,7 @@ struct RenderCommand {
     RunOptions opt;
     opt.stages = !stages.empty();
     opt.progress = Progress::stderr_is_terminal();
+    opt.limits = {max_memory_gb * 1e9, max_hours * 3600, 600};
     // Streamed into temporaries as they come; moved into place at the end.
     std::unique_ptr<FrameOutput> fall;
     if (!frames.empty() || !video.empty()) {
@@ -366,6 +373,7 @@ int cli_main(int argc, char** argv) {
   bench_friction.add_to(app);
   compare.add_to(app);
   auto validation = add_validation_commands(app);
+  auto stress = add_stress_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -379,6 +387,9 @@ int cli_main(int argc, char** argv) {
   } catch (const SimulationError& e) {
     std::fprintf(stderr, "sandpic: simulation failed: %s\n", e.what());
     return 3;
+  } catch (const CheckFailed& e) {
+    std::fprintf(stderr, "sandpic: %s\n", e.what());
+    return 1;
   } catch (const nlohmann::json::exception& e) {  // a value no key check caught
     std::fprintf(stderr, "sandpic: error: bad value: %s\n", e.what());
     return 2;

@@ -135,6 +135,17 @@ TEST(SceneFile, LoadReportsFileAndPosition) {
   std::remove(path.c_str());
 }
 
+// A number past a double's range: nlohmann says neither where nor which key.
+TEST(SceneFile, ANumberTooLargeNamesItsKeyAndPosition) {
+  std::string path = testing::TempDir() + "/huge_scene.json";
+  std::ofstream(path) << "{\n  \"segment\": {\"ellipses\": [{\"cx\": 1, \"cy\": 2, \"a\": 3, \"b\": 4},\n"
+                         "    {\"cx\": 1e999}]}\n}\n";
+  std::string e = error_of([&] { load_scene(path); });
+  EXPECT_NE(e.find("'segment.ellipses[1].cx'"), std::string::npos) << e;
+  EXPECT_NE(e.find("line 3"), std::string::npos) << e;
+  std::remove(path.c_str());
+}
+
 TEST(SceneFile, RelativeImagePathsStartAtTheSceneFile) {
   std::string path = testing::TempDir() + "/rel_scene.json";
   std::ofstream(path) << R"({"init": {"method": "halftone", "image": "pic.png"}})";
