@@ -1,5 +1,6 @@
 // The DEM backend. Each step is a short fixed list of named stages:
-//   release → insert → water → step (Bullet) → [--frames] frame → [every cycle] classify → freeze → guard
+//   release → insert → move (water → step (Bullet), n sub-steps) → [--frames] frame
+//   → [every cycle] classify → freeze → guard (and the stiffness watch's sub-steps)
 // paper §7: release toward each unit's outlet; §8.1: the three-layer model.
 #include "physics/dem_simulator.h"
 
@@ -12,6 +13,7 @@
 #include "physics/dem_cost.h"
 #include "physics/layers.h"
 #include "physics/raster.h"
+#include "physics/stiffness.h"
 #include "physics/water.h"
 #include "physics/world.h"
 #include "src/errors.h"
@@ -47,7 +49,10 @@ class DemRun {
  private:
   void release_stage();
   void insert_stage();
+  void check_sinks() const;
+  void move_stage();
   void water_stage();
+  void set_substeps(int n);
   void classify_stage();
   void freeze_stage();
   void guard_stage();
@@ -57,6 +62,8 @@ class DemRun {
   void make_static(int32_t id, Vec2 p);
   double surface(double x, double r) const;
   void sample_layers();
+  double kinetic_energy_j() const;
+  ordered_json substep_stats() const;
   cv::Mat layer_map() const;
 
   const Scene& s_;
@@ -70,7 +77,7 @@ class DemRun {
   std::vector<Outlet> outlets_;
   std::vector<int32_t> unit_of_order_;
   std::array<double, kClasses> radius_, mass_, decay_{};
-  double dt_, small_d_;
+  double dt_, small_d_, sub_dt_ = 0;
   LayerRule rule_;
   LayerHeights heights_;
   GrainWorld world_;
@@ -96,6 +103,7 @@ class DemRun {
   cv::Mat layer_snapshot_;
   FrameSchedule frames_;
   Crowding crowding_;  // insert_stage's neighbourhood index
+  StiffnessWatch watch_;
 };
 
 DemRun::DemRun(const SimInput& in, Progress& progress)
@@ -111,17 +119,16 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
       radius_(dem_radii(in.scene)),
       mass_(dem_masses(in.scene)),
       dt_(dem_time_step(in.scene)),
+      small_d_(2 * *std::min_element(radius_.begin(), radius_.end())),
       heights_(in.scene.window.width + 1),
       world_(W_, H_, radius_, mass_,
              GrainMaterial{in.scene.physics.friction, in.scene.physics.restitution, in.scene.dem.rolling_resistance,
                            in.scene.dem.solver_iterations, dem_bounce_speed(water_, dt_)}),
       frames_{n_, in.frames.wanted() ? in.frames.count : 0},
-      crowding_(W_, H_) {
-  small_d_ = 1e9;
-  for (int k = 0; k < kClasses; ++k) {
-    decay_[k] = std::exp(-water_.drag_per_s[k] * dt_);
-    small_d_ = std::min(small_d_, 2 * radius_[k]);
-  }
+      crowding_(W_, H_),
+      watch_(in.scene.dem.max_overlap * small_d_, in.scene.dem.max_substeps) {
+  check_sinks();
+  set_substeps(1);
   for (const Unit& u : in.seg.units) outlets_.push_back(outlet(model_, u));
   for (size_t u = 0; u < in.seg.units.size(); ++u)
     for (int64_t i = in.order.unit_begin[u]; i < in.order.unit_begin[u + 1]; ++i) unit_of_order_.push_back(int32_t(u));
@@ -204,7 +211,42 @@ void DemRun::insert_stage() {
   peak_bodies_ = std::max(peak_bodies_, dynamic_.size());
 }
 
-// Stage: gravity with buoyancy, and drag, integrated exactly for linear drag:
+// A grain no denser than the water never settles: it would float, or hang
+// where it was inserted until the run's time limit (a neutral one took 109 s
+// of simulated time to fail; a floating one flew out through the lid). Only
+// the classes the picture uses count.
+void DemRun::check_sinks() const {
+  if (!s_.dem.water) return;
+  std::array<bool, kClasses> used{};
+  for (uint8_t k : in_.grains.cls) used[k] = true;
+  for (int k = 0; k < kClasses; ++k)
+    if (used[k] && !(water_.terminal_px_s[k] > 0))
+      throw key_error("grains.density_g_cm3[" + std::to_string(k) + "]",
+                      "S" + std::to_string(k + 1) + "'s grains (" + std::to_string(s_.grains.density_g_cm3[k]) +
+                          " g/cm³) are not denser than the water (dem.water_density_g_cm3 = " +
+                          std::to_string(s_.dem.water_density_g_cm3) + "): they would not sink in the DEM mode");
+}
+
+// What depends on the (sub-)step: the drag's decay over it, and the bounce
+// threshold (a resting contact closes by g·dt per sub-step). Masses keep
+// their scale: a grain's weight per sub-step only falls further under
+// Bullet's rolling-friction cap (dem_masses).
+void DemRun::set_substeps(int n) {
+  sub_dt_ = dt_ / n;
+  for (int k = 0; k < kClasses; ++k) decay_[k] = std::exp(-water_.drag_per_s[k] * sub_dt_);
+  world_.set_bounce_speed(dem_bounce_speed(water_, sub_dt_));
+}
+
+// Stage: the water and Bullet's contacts, as the stiffness watch's n
+// sub-steps of dt/n (one at the defaults).
+void DemRun::move_stage() {
+  for (int i = 0; i < watch_.substeps(); ++i) {
+    water_stage();
+    world_.step(sub_dt_);
+  }
+}
+
+// Gravity with buoyancy, and drag, integrated exactly for linear drag:
 // v ← v_t + (v − v_t)·e^(−k dt). Bullet then solves the contacts.
 void DemRun::water_stage() {
   for (int32_t id : dynamic_) {
@@ -215,7 +257,7 @@ void DemRun::water_stage() {
       Vec2 vt(0, -water_.terminal_px_s[k]);
       v = vt + (v - vt) * decay_[k];
     } else {
-      v.y() -= water_.gravity_px_s2[k] * dt_;
+      v.y() -= water_.gravity_px_s2[k] * sub_dt_;
     }
     world_.set_velocity(slot, v);
   }
@@ -326,28 +368,64 @@ std::string at(double t, int64_t steps) {
   return " at t = " + std::to_string(t) + " s (step " + std::to_string(steps) + ")";
 }
 
-// Stage (every cycle): a NaN, a grain through a wall, a deep overlap or more
-// kinetic energy than gravity could have given stops the run.
+// Stage (every cycle): a NaN or a grain through a wall stops the run; the
+// deepest overlap and the kinetic energy go to the stiffness watch, which
+// raises the sub-steps at its soft level and stops the run past a hard limit
+// (an overlap deeper than dem.max_overlap, more kinetic energy than gravity
+// and insertion have given) at the most sub-steps.
 void DemRun::guard_stage() {
-  double kinetic = 0;
+  StiffnessReading r;
   for (int32_t id : dynamic_) {
     const int k = in_.grains.cls[size_t(id)];
     Vec2 p = world_.position(slot_[size_t(id)]), v = world_.velocity(slot_[size_t(id)]);
     if (!p.allFinite() || !v.allFinite())
-      throw SimulationError("a grain's position became NaN" + at(t_, steps_) + "; lower dem.step_diameters");
+      throw SimulationError("a grain's position became NaN" + at(t_, steps_) +
+                            "; lower dem.step_diameters or raise dem.max_substeps");
     if (p.x() < -radius_[k] || p.x() > W_ + radius_[k] || p.y() < -2 * radius_[k])
       throw SimulationError("a grain left the window through a wall (at " + std::to_string(p.x()) + ", " +
                             std::to_string(p.y()) + " px)" + at(t_, steps_) +
-                            "; lower dem.step_diameters or raise dem.solver_iterations");
-    kinetic += 0.5 * mass_[k] * v.squaredNorm();
+                            "; lower dem.step_diameters or raise dem.max_substeps or dem.solver_iterations");
+    r.kinetic += 0.5 * mass_[k] * v.squaredNorm();
+    r.settling += 0.5 * mass_[k] * water_.terminal_px_s[k] * water_.terminal_px_s[k];
   }
-  deepest_ = std::max(deepest_, world_.deepest_overlap());
-  if (deepest_ > s_.dem.max_overlap * small_d_)
-    throw SimulationError("grains overlap by " + std::to_string(deepest_) + " px" + at(t_, steps_) +
-                          "; lower dem.step_diameters or raise dem.solver_iterations");
-  if (kinetic > energy_budget_ * 1.0001 + 1e-9)
-    throw SimulationError("kinetic energy exceeds the energy released" + at(t_, steps_) +
-                          "; lower dem.step_diameters or physics.restitution");
+  r.overlap_px = world_.deepest_overlap();
+  r.budget = energy_budget_;
+  deepest_ = std::max(deepest_, r.overlap_px);
+  switch (watch_.judge(r, t_, steps_)) {
+    case StiffnessWatch::Verdict::Calm:
+      break;
+    case StiffnessWatch::Verdict::Changed:
+      set_substeps(watch_.substeps());
+      break;
+    case StiffnessWatch::Verdict::Diverged:
+      throw SimulationError(watch_.reason() + at(t_, steps_) + " with " + std::to_string(watch_.substeps()) +
+                            " sub-steps (dem.max_substeps); lower dem.step_diameters or physics.restitution, or raise "
+                            "dem.max_substeps or dem.solver_iterations");
+  }
+}
+
+// The bodies' kinetic energy (translation and rotation about z) in joules,
+// with the grains' real masses (the scene's densities and diameters, not
+// the solver's scaled ones) and speeds in m/s.
+double DemRun::kinetic_energy_j() const {
+  const double m_per_px = 1e-3 / px_per_mm(s_);
+  double e = 0;
+  for (int32_t id : dynamic_) {
+    const int k = in_.grains.cls[size_t(id)];
+    const int slot = slot_[size_t(id)];
+    const double d = s_.grains.diameter_mm[k] * 1e-3;                                       // m
+    const double m = s_.grains.density_g_cm3[k] * 1e3 * std::numbers::pi / 6 * d * d * d;  // kg
+    const double v = world_.velocity(slot).norm() * m_per_px, w = world_.spin(slot);
+    e += 0.5 * m * v * v + 0.5 * (m * d * d / 10) * w * w;  // a solid sphere: I = m d² / 10
+  }
+  return e;
+}
+
+ordered_json DemRun::substep_stats() const {
+  ordered_json changes = ordered_json::array();
+  for (const SubStepChange& c : watch_.changes())
+    changes.push_back({{"t_s", c.t_s}, {"step", c.step}, {"substeps", c.substeps}, {"reason", c.reason}});
+  return changes;
 }
 
 void DemRun::sample_layers() {
@@ -424,8 +502,7 @@ SimResult DemRun::run() {
   while (released_ < n_ || !arrivals_.empty() || !dynamic_.empty()) {
     release_stage();
     insert_stage();
-    water_stage();
-    world_.step(dt_);
+    move_stage();
     t_ += dt_;
     ++steps_;
     frame_stage();
@@ -454,6 +531,7 @@ SimResult DemRun::run() {
                             "; raise dem.rest_displacement or dem.slope_limit_deg");
   }
   progress_.finish();
+  const double kinetic_end = kinetic_energy_j();
   for (int32_t id : dynamic_) record(id, world_.position(slot_[size_t(id)]));
   sample_layers();
 
@@ -478,6 +556,10 @@ SimResult DemRun::run() {
   out.stats["peak_bodies"] = peak_bodies_;
   out.stats["insertions_delayed"] = delayed_;
   out.stats["deepest_overlap_px"] = deepest_;
+  out.stats["deepest_overlap_diameters"] = deepest_ / small_d_;
+  out.stats["kinetic_energy_end_J"] = kinetic_end;
+  out.stats["substeps"] = watch_.most_substeps();
+  out.stats["substep_changes"] = substep_stats();
   out.stats["terminal_speed_px_s"] = water_.terminal_px_s;
   out.stats["layer_counts"] = thin;
   return out;

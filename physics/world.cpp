@@ -168,6 +168,8 @@ Vec2 GrainWorld::velocity(int slot) const {
   return {v.x(), v.y()};
 }
 
+double GrainWorld::spin(int slot) const { return impl_->bodies[size_t(slot)]->getAngularVelocity().z(); }
+
 void GrainWorld::set_velocity(int slot, Vec2 v) {
   impl_->bodies[size_t(slot)]->setLinearVelocity(btVector3(btScalar(v.x()), btScalar(v.y()), 0));
 }
@@ -188,6 +190,10 @@ void GrainWorld::remove_static(int slot) {
 void GrainWorld::raise_ground(Vec2 p, double r) { impl_->ground->raise(p, r); }
 
 void GrainWorld::step(double dt) { impl_->world.stepSimulation(btScalar(dt), 0, btScalar(dt)); }
+
+void GrainWorld::set_bounce_speed(double px_s) {
+  impl_->world.getSolverInfo().m_restitutionVelocityThreshold = btScalar(px_s);
+}
 
 std::vector<int> GrainWorld::wedged(double depth) const {
   std::vector<int> slots;

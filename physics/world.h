@@ -35,6 +35,7 @@ class GrainWorld {
   void remove_body(int slot);
   Vec2 position(int slot) const;
   Vec2 velocity(int slot) const;
+  double spin(int slot) const;  // rad/s about z
   void set_velocity(int slot, Vec2 v);
 
   int add_static(int cls, Vec2 position);  // a collider that never moves
@@ -46,6 +47,9 @@ class GrainWorld {
   void raise_ground(Vec2 p, double r);
 
   void step(double dt);
+  // The DEM's sub-steps: a contact closes by g·dt per (sub-)step, so the
+  // bounce threshold follows the step it is solved at.
+  void set_bounce_speed(double px_s);
   double deepest_overlap() const;  // px, over all contacts
   // Bodies pressed deeper than `depth` px into a collider (a static grain,
   // the ground, a wall): wedged between immovable things, as no body can

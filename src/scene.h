@@ -164,6 +164,11 @@ struct Scene {
     double static_thickness_mm = 2;    // paper §8.1
     double insert_gap_diameters = 4;   // flight is analytic until this far above the pile
     double max_overlap = 1.0;          // divergence: overlap beyond this (small-grain diameters)
+    // Stiffness (issue 6): an overlap past half of max_overlap, or bodies
+    // twice as fast as settling, doubles the sub-steps of each step's
+    // water and Bullet step, up to this; past max_overlap at the most, the
+    // run has diverged.
+    int max_substeps = 16;
   } dem;
   struct Render {
     std::string background;  // image for the emptied upper part (§10, Fig. 14g)

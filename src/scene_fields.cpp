@@ -616,6 +616,8 @@ std::vector<Field> make_fields() {
            "a falling grain becomes a body this far above the pile (diameters); above, its flight is analytic"),
       real("dem.max_overlap", [](S& s) -> double& { return s.dem.max_overlap; }, 0.01, 10,
            "divergence: two grains overlapping by more than this (small-grain diameters) stop the run"),
+      integer("dem.max_substeps", [](S& s) -> int& { return s.dem.max_substeps; }, 1, 256,
+              "most sub-steps per step: a stiff run (deep overlaps, energy growing) doubles them up to this (1: never)"),
       text("render.background", [](S& s) -> auto& { return s.render.background; },
            "picture behind the emptied upper part (§10, Fig. 14g); empty: render.background_color"),
       figures_field(),

@@ -123,7 +123,7 @@ if [ "$BULLET" = with-bullet ]; then
   is_png "$T/dem.png"; is_png "$T/dst/6-layers.png"; is_png "$T/dst/7-layers-end.png"
   if grep -q '"in_picture": 300' "$T/dem.json"; then ok; else bad "dem stats: $(cat "$T/dem.json")"; fi
   echo keep >"$T/keep.png"
-  expect 3 "dem divergence" -- "$BIN" render -o "$T/keep.png" --mode dem "${TINY[@]}" --set dem.max_overlap=0.01 \
+  expect 3 "dem divergence" -- "$BIN" render -o "$T/keep.png" --mode dem "${TINY[@]}" --set dem.max_overlap=0.01 --set dem.max_substeps=1 \
     --frames "$T/dfr" --video "$T/dfr.mp4"
   one_line; err_has "overlap"; err_has "physics seed"; absent "$T/dfr"; absent "$T/dfr.mp4"
   if ls "$T" | grep -q tmp-; then bad "a diverged run left temporaries: $(ls "$T")"; else ok; fi
