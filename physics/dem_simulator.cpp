@@ -495,8 +495,15 @@ cv::Mat DemRun::layer_map() const {
 SimResult DemRun::run() {
   const int cycle = s_.dem.cycle_steps;
   // A scene that never settles is a failure, not a hang: the release lasts
-  // n/rate, and settling gets a generous allowance after it.
-  const double limit = double(n_) / s_.dem.release_rate + 60.0 + 2000 * cycle * dt_;
+  // n/rate, the slowest class needs to sink through the window at its
+  // settling speed (0.01 mm grains sink at ~0.05 mm/s: a 70 px window takes
+  // them 40 minutes of simulated time), and settling gets a generous
+  // allowance after that.
+  double slowest = INFINITY;
+  const auto counts = in_.grains.per_class();
+  for (int k = 0; k < kClasses; ++k)
+    if (counts[size_t(k)] > 0) slowest = std::min(slowest, water_.terminal_px_s[k]);
+  const double limit = double(n_) / s_.dem.release_rate + 2 * H_ / std::max(slowest, 1e-9) + 60.0 + 2000 * cycle * dt_;
   progress_.start("dem", n_);
   frame_stage();  // frame 0: every grain still in the region
   while (released_ < n_ || !arrivals_.empty() || !dynamic_.empty()) {
@@ -527,7 +534,8 @@ SimResult DemRun::run() {
     }
     progress_.update(layers_ == Layers::AllDynamic ? inserted_ : settled_ + resting_);
     if (t_ > limit)
-      throw SimulationError(std::to_string(dynamic_.size()) + " grains still moving" + at(t_, steps_) +
+      throw SimulationError(std::to_string(n_ - settled_ - int64_t(dynamic_.size())) + " grains still falling and " +
+                            std::to_string(dynamic_.size()) + " still moving on the pile" + at(t_, steps_) +
                             "; raise dem.rest_displacement or dem.slope_limit_deg");
   }
   progress_.finish();

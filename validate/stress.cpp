@@ -53,6 +53,14 @@ ojson base_scene(bool quick) {
 
 std::string dumped(const ojson& doc) { return doc.dump(2) + "\n"; }
 
+// A number for a table or a label; "—" for a figure a run did not report (< 0).
+std::string fixed(double v, const char* format) {
+  if (v < 0) return "—";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
 // A case that sets keys of the base scene.
 StressCase keys(std::string name, std::string about, std::vector<std::pair<std::string, ojson>> settings, bool quick,
                 std::vector<std::string> modes = {"lattice", "dem"}, std::set<Outcome> expect = kAnyEnd) {
@@ -138,9 +146,19 @@ std::vector<StressCase> stress_cases(bool quick) {
   cs.push_back(keys("friction-1.5", "physics.friction = 1.5", {{"physics.friction", 1.5}}, quick));
   cs.push_back(keys("restitution-0", "physics.restitution = 0", {{"physics.restitution", 0}}, quick));
   cs.push_back(keys("restitution-1", "physics.restitution = 1 (elastic)", {{"physics.restitution", 1}}, quick));
-  cs.push_back(keys("grains-0.01mm", "grains.diameter_mm = 0.01 (all classes)",
+  // Grain size: at the scene's pixel size (sub-pixel grains; grains of many
+  // pixels, one a pixel of the region, overfill the window) and with the
+  // pixel scaled along (grains ~1.1 px, as by default: the physics alone
+  // changes, settling speeds 10^5 apart).
+  const double mm_px = base["units"]["mm_per_pixel"];
+  cs.push_back(keys("grains-0.01mm", "grains.diameter_mm = 0.01 (all classes; " + fixed(0.01 / mm_px, "%.3g") + " px)",
                     {{"grains.diameter_mm", {0.01, 0.01, 0.01, 0.01}}}, quick));
-  cs.push_back(keys("grains-5mm", "grains.diameter_mm = 5 (all classes)", {{"grains.diameter_mm", {5, 5, 5, 5}}}, quick));
+  cs.push_back(keys("grains-0.01mm-1px", "grains.diameter_mm = 0.01, units.mm_per_pixel = 0.009",
+                    {{"grains.diameter_mm", {0.01, 0.01, 0.01, 0.01}}, {"units.mm_per_pixel", 0.009}}, quick));
+  cs.push_back(keys("grains-5mm", "grains.diameter_mm = 5 (all classes; " + fixed(5 / mm_px, "%.3g") + " px)",
+                    {{"grains.diameter_mm", {5, 5, 5, 5}}}, quick));
+  cs.push_back(keys("grains-5mm-1px", "grains.diameter_mm = 5, units.mm_per_pixel = 4.5",
+                    {{"grains.diameter_mm", {5, 5, 5, 5}}, {"units.mm_per_pixel", 4.5}}, quick));
   cs.push_back(keys("density-100:1", "grains.density_g_cm3 = [1.05, 1.05, 100, 100] (in water of 1.0)",
                     {{"grains.density_g_cm3", {1.05, 1.05, 100, 100}}}, quick));
   cs.push_back(keys("step-x10", "dem.step_diameters = 0.5 (10x the default time step)", {{"dem.step_diameters", 0.5}},
@@ -164,13 +182,19 @@ std::vector<StressCase> stress_cases(bool quick) {
   }
   // The initialization region at its ends.
   cs.push_back(keys("region-1px", "region.height = 1", {{"region.height", 1}}, quick));
-  cs.push_back(keys("region-full", "region.height = window.height (" + std::to_string(H) + " px)",
+  cs.push_back(keys("region-full", "region.height = window.height (" + std::to_string(H) + " px; its sand overfills it)",
                     {{"region.height", H}}, quick));
+  cs.push_back(keys("region-full-fine", "region.height = window.height, grains 0.6 and 0.4 px so that their sand fits",
+                    {{"region.height", H}, {"grains.diameter_mm", {0.6 * mm_px, 0.6 * mm_px, 0.4 * mm_px, 0.4 * mm_px}}},
+                    quick));
   // Ellipses (§5): round, needle-thin, overlapping, reaching out of the region.
   cs.push_back(keys("eccentricity-0", "segment.eccentricity_min = max = 0",
                     {{"segment.eccentricity_min", 0}, {"segment.eccentricity_max", 0}}, quick));
-  cs.push_back(keys("eccentricity-0.999", "segment.eccentricity_min = max = 0.999",
-                    {{"segment.eccentricity_min", 0.999}, {"segment.eccentricity_max", 0.999}}, quick));
+  // Semi-major axes of 0.4 window widths: at 0.999 the ellipses are 0.045
+  // as high as wide, and smaller ones would be under 0.5 px (refused).
+  cs.push_back(keys("eccentricity-0.999", "segment.eccentricity_min = max = 0.999, semi-major axes 0.4 window widths",
+                    {{"segment.eccentricity_min", 0.999}, {"segment.eccentricity_max", 0.999},
+                     {"segment.semi_major_min", 0.4 * W}, {"segment.semi_major_max", 0.4 * W}}, quick));
   const double cx = W / 2.0, cy = R / 2.0;
   cs.push_back(keys("ellipses-overlapping", "segment.method = explicit, two ellipses sharing most of their area",
                     {{"segment.method", "explicit"},
@@ -368,15 +392,8 @@ std::vector<StressRow> run_stress(const StressOptions& opt, const std::function<
 
 namespace {
 
-std::string fixed(double v, const char* format) {
-  if (v < 0) return "—";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
-
 std::string cell(std::string text) {  // a Markdown table cell
-  for (size_t at; (at = text.find('|')) != std::string::npos;) text.replace(at, 1, "/");
+  std::replace(text.begin(), text.end(), '|', '/');
   if (text.size() > 140) text.resize(137), text += "...";
   return text;
 }

@@ -186,6 +186,27 @@ expect 2 "sketch picture missing" -- "$BIN" render -o "$T/nc.png" --set segment.
   "segment.sketch.image=\"$T/nothing.png\""
 one_line; err_has "segment.sketch.image"; absent "$T/nc.png"
 
+# Issue 6: a scene past the memory or time limit is refused before it starts.
+expect 2 "memory limit" -- "$BIN" render -o "$T/keep.png" --max-memory-gb 0.05
+one_line; err_has "--max-memory-gb"; err_has "350000 grains"
+if [ "$(cat "$T/keep.png")" = keep ]; then ok; else bad "a refused scene overwrote the output"; fi
+if [ "$BULLET" = with-bullet ]; then
+  expect 2 "time limit" -- "$BIN" render -o "$T/e.png" --mode dem --max-hours 0.01
+  one_line; err_has "--max-hours"; absent "$T/e.png"
+fi
+printf '{"physics": {"friction": 1e999}}\n' >"$T/huge.json"
+expect 2 "number past a double" -- "$BIN" render "$T/huge.json" -o "$T/e.png"
+one_line; err_has "physics.friction"; err_has "line 1"; absent "$T/e.png"
+
+# Issue 6: the stress catalogue, a few cases of each kind (the whole quick
+# catalogue is a test of its own).
+expect 0 "stress" -- "$BIN" stress --quick --out "$T/stress" --only json-nan,image-16bit,region-1px
+for f in stress.md stress.json; do if [ -s "$T/stress/$f" ]; then ok; else bad "stress wrote no $f"; fi; done
+if grep -q '| image-16bit | lattice | picture |' "$T/stress/stress.md"; then ok; else bad "stress.md lacks image-16bit"; fi
+if grep -q '"failed": 0' "$T/stress/stress.json"; then ok; else bad "stress.json reports failures"; fi
+expect 2 "stress unknown case" -- "$BIN" stress --quick --out "$T/stress" --only no-such-case
+one_line; err_has "no-such-case"
+
 # paper §10, Fig. 16: figures; a missing mask is named.
 expect 2 "figure mask missing" -- "$BIN" render -o "$T/fg.png" --set \
   "render.figures=[{\"mask\": \"$T/nothing.png\"}]"
