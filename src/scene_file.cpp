@@ -137,25 +137,28 @@ Scene area_scene(const Scene& s, size_t i) {
   return out;
 }
 
-Scene load_scene(const std::string& path) {
-  const std::optional<std::string> read = read_text(path);
-  if (!read) throw InputError("cannot read scene file '" + path + "'");
-  const std::string& text = *read;
+Scene scene_from_text(const std::string& text, const std::string& name, const std::string& base_dir) {
   json doc;
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    throw InputError("scene file '" + path + "': malformed JSON at " + where(text, e.byte > 0 ? e.byte - 1 : 0));
+    throw InputError("scene file '" + name + "': malformed JSON at " + where(text, e.byte > 0 ? e.byte - 1 : 0));
   }
   Scene s;
-  size_t slash = path.rfind('/');
-  s.base_dir = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  s.base_dir = base_dir;
   try {
     apply_json(s, doc);
   } catch (const InputError& e) {
-    throw InputError("scene file '" + path + "': " + e.what());
+    throw InputError("scene file '" + name + "': " + e.what());
   }
   return s;
+}
+
+Scene load_scene(const std::string& path) {
+  const std::optional<std::string> read = read_text(path);
+  if (!read) throw InputError("cannot read scene file '" + path + "'");
+  size_t slash = path.rfind('/');
+  return scene_from_text(*read, path, slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash));
 }
 
 void apply_setting(Scene& s, const std::string& assignment) {
