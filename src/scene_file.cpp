@@ -42,6 +42,23 @@ size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+// nlohmann's parser copies values recursively, so a document nested some
+// 100,000 levels deep overflows the stack: refused here, where the parser
+// calls back at every level. A scene needs 8 (regions[i].segment.sketch.ridges[j][k]).
+// `what` names the text in the error ("scene file 'a.json'").
+constexpr int kMaxJsonDepth = 64;
+
+json parse_nested(const std::string& text, bool allow_exceptions, const std::string& what) {
+  return json::parse(
+      text,
+      [&what](int depth, json::parse_event_t, json&) {
+        if (depth > kMaxJsonDepth)
+          throw InputError(what + ": JSON nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
+        return true;
+      },
+      allow_exceptions);
+}
+
 [[noreturn]] void unknown_key(const std::string& path) {
   throw InputError("unknown scene key '" + path + "' (did you mean '" + nearest_key(path) +
                    "'? `sandpic scene` lists every key)");
@@ -140,7 +157,7 @@ Scene area_scene(const Scene& s, size_t i) {
 Scene scene_from_text(const std::string& text, const std::string& name, const std::string& base_dir) {
   json doc;
   try {
-    doc = json::parse(text);
+    doc = parse_nested(text, true, "scene file '" + name + "'");
   } catch (const json::parse_error& e) {
     throw InputError("scene file '" + name + "': malformed JSON at " + where(text, e.byte > 0 ? e.byte - 1 : 0));
   }
@@ -166,7 +183,7 @@ void apply_setting(Scene& s, const std::string& assignment) {
   if (eq == std::string::npos || eq == 0)
     throw InputError("--set expects key.path=value, got '" + assignment + "'");
   std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
-  json v = json::parse(text, nullptr, false);
+  json v = parse_nested(text, false, "scene key '" + path + "'");
   if (v.is_discarded()) v = text;  // a bare word is a string: --set mode=lattice
   if (!find_field(path)) unknown_key(path);
   find_field(path)->set(s, v);
@@ -224,7 +241,7 @@ Scene with_calibration(const Scene& s) {
   const std::string path = s.resolve(s.lattice.calibration);
   const std::optional<std::string> text = read_text(path);
   if (!text) throw key_error("lattice.calibration", "cannot read '" + path + "'");
-  json doc = json::parse(*text, nullptr, false);
+  json doc = parse_nested(*text, false, "scene key 'lattice.calibration': '" + path + "'");
   if (doc.is_discarded() || !doc.is_object() || !doc.contains("lattice") || !doc["lattice"].is_object())
     throw key_error("lattice.calibration", "'" + path + "' is not a calibration (JSON with a \"lattice\" object)");
   json part = json::object();

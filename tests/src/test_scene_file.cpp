@@ -135,6 +135,22 @@ TEST(SceneFile, LoadReportsFileAndPosition) {
   std::remove(path.c_str());
 }
 
+// Found by tests/fuzz's review: nlohmann's parser copies values recursively,
+// so a scene nested 100,000 levels deep overflowed the stack (a crash where a
+// one-line error is due), in a scene file and in a --set value alike.
+TEST(SceneFile, DeepNestingIsAnErrorNotACrash) {
+  const size_t n = 100000;
+  const std::string deep = std::string(n, '[') + std::string(n, ']');
+  std::string e = error_of([&] { scene_from_text("{\"mode\": " + deep + "}", "deep.json", "."); });
+  EXPECT_NE(e.find("deep.json"), std::string::npos) << e;
+  EXPECT_NE(e.find("nested"), std::string::npos) << e;
+  Scene s;
+  EXPECT_NE(error_of([&] { apply_setting(s, "mode=" + deep); }).find("nested"), std::string::npos);
+  // A real scene's depth is still read.
+  s = scene_from_text(R"({"regions": [{"segment": {"sketch": {"ridges": [[[1, 2], [3, 4]]]}}}]})", "ok.json", ".");
+  EXPECT_EQ(s.regions.size(), 1u);
+}
+
 TEST(SceneFile, RelativeImagePathsStartAtTheSceneFile) {
   std::string path = testing::TempDir() + "/rel_scene.json";
   std::ofstream(path) << R"({"init": {"method": "halftone", "image": "pic.png"}})";
