@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include "src/errors.h"
@@ -81,6 +82,14 @@ std::string where(const std::string& text, size_t byte) {
     else ++col;
   }
   return "line " + std::to_string(line) + ", column " + std::to_string(col);
+}
+
+// A non-negative size in px² as a whole number: long() is undefined past 2^63,
+// which the largest grains on the finest pixels reach.
+std::string whole(double v) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(0) << std::floor(v);
+  return o.str();
 }
 
 json scaled(const json& v, double f, const std::string& path) {
@@ -314,8 +323,8 @@ void validate(const Scene& s) {
   double worst = largest * double(s.window.width) * s.region.height;
   double room = double(s.window.width) * s.window.height;
   need(worst <= 0.98 * room, "region.height",
-       "the region's sand (up to " + std::to_string(long(worst)) + " px² packed) would not fit in the window (" +
-           std::to_string(long(room)) + " px²); lower region.height or grains.diameter_mm");
+       "the region's sand (up to " + whole(worst) + " px² packed) would not fit in the window (" + whole(room) +
+           " px²); lower region.height or grains.diameter_mm");
 }
 
 }  // namespace sandpic
