@@ -2,7 +2,8 @@
 # Sets sandpic up on a Debian machine: installs the Debian packages it needs
 # (as root, or through sudo), then configures and builds into build/.
 # --tests also installs Chromium, which the validation report's test opens
-# headless (290 MB: a machine that only renders does not need it).
+# headless (290 MB: a machine that only renders does not need it); --fuzz
+# also clang and its runtime libraries, which hold libFuzzer (.ci/fuzz).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -11,7 +12,8 @@ PACKAGES=(g++ cmake make pkgconf libeigen3-dev libopencv-dev libtbb-dev libbulle
 for arg in "$@"; do
   case "$arg" in
     --tests) PACKAGES+=(chromium) ;;
-    *) echo "setup: unknown option $arg (only --tests)" >&2; exit 2 ;;
+    --fuzz) PACKAGES+=(clang libclang-rt-14-dev) ;;
+    *) echo "setup: unknown option $arg (--tests or --fuzz)" >&2; exit 2 ;;
   esac
 done
 missing=()

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include "src/errors.h"
@@ -40,6 +41,23 @@ size_t edit_distance(const std::string& a, const std::string& b) {
     }
   }
   return row[b.size()];
+}
+
+// nlohmann's parser copies values recursively, so a document nested some
+// 100,000 levels deep overflows the stack: refused here, where the parser
+// calls back at every level. A scene needs 8 (regions[i].segment.sketch.ridges[j][k]).
+// `what` names the text in the error ("scene file 'a.json'").
+constexpr int kMaxJsonDepth = 64;
+
+json parse_nested(const std::string& text, bool allow_exceptions, const std::string& what) {
+  return json::parse(
+      text,
+      [&what](int depth, json::parse_event_t, json&) {
+        if (depth > kMaxJsonDepth)
+          throw InputError(what + ": JSON nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
+        return true;
+      },
+      allow_exceptions);
 }
 
 [[noreturn]] void unknown_key(const std::string& path) {
@@ -104,6 +122,14 @@ struct KeyPathSax : nlohmann::json_sax<json> {
     return false;
   }
 };
+
+// A non-negative size in px² as a whole number: long() is undefined past 2^63,
+// which the largest grains on the finest pixels reach.
+std::string whole(double v) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(0) << std::floor(v);
+  return o.str();
+}
 
 json scaled(const json& v, double f, const std::string& path) {
   if (v.is_number_integer()) return json(static_cast<long long>(std::max(1.0, std::round(v.get<double>() * f))));
@@ -176,33 +202,36 @@ Scene area_scene(const Scene& s, size_t i) {
   return out;
 }
 
-Scene load_scene(const std::string& path) {
-  const std::optional<std::string> read = read_text(path);
-  if (!read) throw InputError("cannot read scene file '" + path + "'");
-  const std::string& text = *read;
+Scene scene_from_text(const std::string& text, const std::string& name, const std::string& base_dir) {
   json doc;
   try {
-    doc = json::parse(text);
+    doc = parse_nested(text, true, "scene file '" + name + "'");
   } catch (const json::parse_error& e) {
     // nlohmann's reason follows "... while parsing <what> - ".
     const std::string what = e.what(), reason = what.substr(std::min(what.size(), what.find(" - ") + 3));
-    throw InputError("scene file '" + path + "': malformed JSON at " + where(text, e.byte > 0 ? e.byte - 1 : 0) +
+    throw InputError("scene file '" + name + "': malformed JSON at " + where(text, e.byte > 0 ? e.byte - 1 : 0) +
                      (reason.empty() ? "" : ": " + reason));
   } catch (const json::out_of_range&) {  // a number past a double's range
     KeyPathSax sax;
     json::sax_parse(text, &sax);
-    throw InputError("scene file '" + path + "': scene key '" + sax.path() + "': a number too large for a double, at " +
+    throw InputError("scene file '" + name + "': scene key '" + sax.path() + "': a number too large for a double, at " +
                      where(text, sax.stopped_at > 0 ? sax.stopped_at - 1 : 0));
   }
   Scene s;
-  size_t slash = path.rfind('/');
-  s.base_dir = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  s.base_dir = base_dir;
   try {
     apply_json(s, doc);
   } catch (const InputError& e) {
-    throw InputError("scene file '" + path + "': " + e.what());
+    throw InputError("scene file '" + name + "': " + e.what());
   }
   return s;
+}
+
+Scene load_scene(const std::string& path) {
+  const std::optional<std::string> read = read_text(path);
+  if (!read) throw InputError("cannot read scene file '" + path + "'");
+  size_t slash = path.rfind('/');
+  return scene_from_text(*read, path, slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash));
 }
 
 void apply_setting(Scene& s, const std::string& assignment) {
@@ -210,7 +239,7 @@ void apply_setting(Scene& s, const std::string& assignment) {
   if (eq == std::string::npos || eq == 0)
     throw InputError("--set expects key.path=value, got '" + assignment + "'");
   std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
-  json v = json::parse(text, nullptr, false);
+  json v = parse_nested(text, false, "scene key '" + path + "'");
   if (v.is_discarded()) v = text;  // a bare word is a string: --set mode=lattice
   if (!find_field(path)) unknown_key(path);
   find_field(path)->set(s, v);
@@ -268,7 +297,7 @@ Scene with_calibration(const Scene& s) {
   const std::string path = s.resolve(s.lattice.calibration);
   const std::optional<std::string> text = read_text(path);
   if (!text) throw key_error("lattice.calibration", "cannot read '" + path + "'");
-  json doc = json::parse(*text, nullptr, false);
+  json doc = parse_nested(*text, false, "scene key 'lattice.calibration': '" + path + "'");
   if (doc.is_discarded() || !doc.is_object() || !doc.contains("lattice") || !doc["lattice"].is_object())
     throw key_error("lattice.calibration", "'" + path + "' is not a calibration (JSON with a \"lattice\" object)");
   json part = json::object();
@@ -341,8 +370,8 @@ void validate(const Scene& s) {
   double worst = largest * double(s.window.width) * s.region.height;
   double room = double(s.window.width) * s.window.height;
   need(worst <= 0.98 * room, "region.height",
-       "the region's sand (up to " + std::to_string(long(worst)) + " px² packed) would not fit in the window (" +
-           std::to_string(long(room)) + " px²); lower region.height or grains.diameter_mm");
+       "the region's sand (up to " + whole(worst) + " px² packed) would not fit in the window (" + whole(room) +
+           " px²); lower region.height or grains.diameter_mm");
 }
 
 }  // namespace sandpic

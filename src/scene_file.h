@@ -27,6 +27,10 @@ struct Field {
 const std::vector<Field>& scene_fields();
 
 Scene load_scene(const std::string& path);
+// What load_scene does once the file is read: `text` parsed and applied, errors
+// naming `name`, relative paths starting at `base_dir` (tests/fuzz feeds it
+// arbitrary bytes without a file).
+Scene scene_from_text(const std::string& text, const std::string& name, const std::string& base_dir);
 void apply_json(Scene& s, const json& doc);
 void apply_setting(Scene& s, const std::string& assignment);  // "key.path=value"
 void apply_scale(Scene& s, double factor);

@@ -146,6 +146,36 @@ TEST(SceneFile, ANumberTooLargeNamesItsKeyAndPosition) {
   std::remove(path.c_str());
 }
 
+// Found by tests/fuzz's review: nlohmann's parser copies values recursively,
+// so a scene nested 100,000 levels deep overflowed the stack (a crash where a
+// one-line error is due), in a scene file and in a --set value alike.
+TEST(SceneFile, DeepNestingIsAnErrorNotACrash) {
+  const size_t n = 100000;
+  const std::string deep = std::string(n, '[') + std::string(n, ']');
+  std::string e = error_of([&] { scene_from_text("{\"mode\": " + deep + "}", "deep.json", "."); });
+  EXPECT_NE(e.find("deep.json"), std::string::npos) << e;
+  EXPECT_NE(e.find("nested"), std::string::npos) << e;
+  Scene s;
+  EXPECT_NE(error_of([&] { apply_setting(s, "mode=" + deep); }).find("nested"), std::string::npos);
+  // A real scene's depth is still read.
+  s = scene_from_text(R"({"regions": [{"segment": {"sketch": {"ridges": [[[1, 2], [3, 4]]]}}}]})", "ok.json", ".");
+  EXPECT_EQ(s.regions.size(), 1u);
+}
+
+// Found reviewing validate() for the fuzz target: the "would not fit" message
+// printed the sand's area through long(), undefined past 2^63 px² (negative on
+// x86), which the largest grains on the finest pixels reach.
+TEST(SceneFile, HugeSandAreaIsReportedNotOverflowed) {
+  Scene s;
+  s.window = {20000, 20000};
+  s.region.height = 20000;
+  s.units.mm_per_pixel = 1e-4;
+  s.grains.diameter_mm = {100, 100, 100, 100};
+  std::string e = error_of([&] { validate(s); });
+  EXPECT_NE(e.find("would not fit"), std::string::npos) << e;
+  EXPECT_NE(e.find("up to 383"), std::string::npos) << e;  // pi/4 (1e6 px)^2 / 0.82 x 20000² px: 3.83e20
+}
+
 TEST(SceneFile, RelativeImagePathsStartAtTheSceneFile) {
   std::string path = testing::TempDir() + "/rel_scene.json";
   std::ofstream(path) << R"({"init": {"method": "halftone", "image": "pic.png"}})";
