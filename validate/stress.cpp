@@ -163,6 +163,14 @@ std::vector<StressCase> stress_cases(bool quick) {
                     {{"grains.density_g_cm3", {1.05, 1.05, 100, 100}}}, quick));
   cs.push_back(keys("step-x10", "dem.step_diameters = 0.5 (10x the default time step)", {{"dem.step_diameters", 0.5}},
                     quick, {"dem"}));
+  {
+    // The same without the stiffness watch's sub-steps: the run must stop
+    // itself with a report, not write a picture of exploded grains.
+    StressCase c = keys("step-x10-no-substeps", "dem.step_diameters = 0.5, dem.max_substeps = 1",
+                        {{"dem.step_diameters", 0.5}, {"dem.max_substeps", 1}}, quick, {"dem"}, {Outcome::Divergence});
+    c.mention = "dem.step_diameters";
+    cs.push_back(c);
+  }
   cs.push_back(keys("step-div10", "dem.step_diameters = 0.005 (a tenth of the default time step)",
                     {{"dem.step_diameters", 0.005}}, quick, {"dem"}));
   // Size: millions of grains; the DEM's estimate refuses before starting.
