@@ -43,7 +43,7 @@ void set_path(ojson& doc, const std::string& path, const ojson& v) {
 }
 
 // The catalogue's base: the default scene made small (2,000 grains quick,
-// 7,875 full), written out whole so a case's file stands on its own.
+// 7,950 full), written out whole so a case's file stands on its own.
 ojson base_scene(bool quick) {
   Scene s;
   apply_scale(s, quick ? 0.1 : 0.15);  // smaller would make init.row_height_min < 1 px
