@@ -132,16 +132,20 @@ double HeightField::deposit(int c, uint8_t cls, double area_px) {
   return base + rise / 2;
 }
 
-cv::Mat HeightField::class_map(int width, int height, uint8_t empty) const {
+cv::Mat HeightField::class_map(int width, int height, uint8_t empty, double surface_px) const {
   cv::Mat map(height, width, CV_8U, cv::Scalar(empty));
   const double columns_per_px = 1.0 / width_;
   tbb::parallel_for(0, width, [&](int x) {
     int c = std::min(columns() - 1, int((x + 0.5) * columns_per_px));
     const std::vector<Deposit>& stack = stacks_[size_t(c)];
+    // The loose layer: tops above `from` drawn `stretch` times as far above it.
+    const double top = this->height(c), loose = std::min(top, kLooseLayerPx);
+    const double from = top - loose, stretch = loose > 0 ? (loose + surface_px) / loose : 1;
+    auto drawn_top = [&](size_t k) { return stack[k].top <= from ? double(stack[k].top) : from + (stack[k].top - from) * stretch; };
     size_t k = 0;
     for (int i = 0; i < height; ++i) {  // pixel rows from the floor up
       double centre = i + 0.5;
-      while (k < stack.size() && stack[k].top <= centre) ++k;
+      while (k < stack.size() && drawn_top(k) <= centre) ++k;
       if (k == stack.size()) break;
       map.at<uint8_t>(height - 1 - i, x) = stack[k].cls;
     }

@@ -46,8 +46,11 @@ class HeightField {
   double deposit(int c, uint8_t cls, double area_px);
 
   // Class of the deposit at each pixel centre, for a window of the given size
-  // (CV_8U, `empty` where no sand lies).
-  cv::Mat class_map(int width, int height, uint8_t empty) const;
+  // (CV_8U, `empty` where no sand lies). `surface_px` > 0 draws each column's
+  // top kLooseLayerPx of sand stretched by that much: the DEM's piles end in a
+  // loose, rough layer about as thick at every pile size (lattice.surface_px).
+  static constexpr double kLooseLayerPx = 10;
+  cv::Mat class_map(int width, int height, uint8_t empty, double surface_px = 0) const;
 
  private:
   static constexpr int kPad = kMaxWindow + 1;

@@ -7,6 +7,7 @@
 #include "src/errors.h"
 #include "src/frames.h"
 #include "src/release.h"
+#include "src/water.h"
 
 namespace sandpic {
 
@@ -41,12 +42,14 @@ namespace {
 
 double columns_per_px_of(const Scene& s, int columns) { return columns / double(s.window.width); }
 
-// paper Fig. 14c-d: the pile so far, and the grains after the first
-// `released` of the falling order still at their places in the region.
-void emit_frame(const SimInput& in, const HeightField& field, int64_t released, FrameSchedule& schedule) {
-  cv::Mat map = field.class_map(in.scene.window.width, in.scene.window.height, kNoSand);
+// paper Fig. 14c-d: the pile of the first `landed` grains, and the grains
+// after the first `released` of the falling order still at their places in
+// the region (those between are on their way down, not drawn).
+void emit_frame(const SimInput& in, const HeightField& field, int64_t landed, int64_t released,
+                FrameSchedule& schedule) {
+  cv::Mat map = field.class_map(in.scene.window.width, in.scene.window.height, kNoSand, in.scene.lattice.surface_px);
   draw_waiting(map, in.grains, std::span<const int32_t>(in.order.grain).subspan(size_t(released)));
-  for (; schedule.due(released); ++schedule.next) in.frames.frame(map);
+  for (; schedule.due(landed); ++schedule.next) in.frames.frame(map);
 }
 
 class LatticeSimulator final : public Simulator {
@@ -92,29 +95,63 @@ class LatticeSimulator final : public Simulator {
     out.y.assign(size_t(in.grains.size()), NAN);
     progress.start("lattice", int64_t(in.order.grain.size()));
     FrameSchedule schedule{int64_t(in.order.grain.size()), in.frames.wanted() ? in.frames.count : 0};
-    if (schedule.due(0)) emit_frame(in, field, 0, schedule);
+    if (schedule.due(0)) emit_frame(in, field, 0, 0, schedule);
     // Sequential on purpose: each grain lands on the surface the previous
     // ones made.
+    int64_t landed = 0, released = 0;
+    auto land = [&](int32_t id, double x) {
+      const uint8_t k = in.grains.cls[size_t(id)];
+      int c = std::clamp(int(std::floor(x * columns_per_px)), 0, columns - 1);
+      double rise = area[k] * columns_per_px;
+      c = field.settle(c, rule_of[k], seed, uint64_t(id));
+      if (field.height(c) + rise > H) c = field.room_near(c, rise);
+      if (c >= 0) {  // else no room anywhere: the grain stays unaccounted (NaN)
+        double centre = field.deposit(c, k, area[k]);
+        out.x[size_t(id)] = float((c + 0.5) / columns_per_px);
+        out.y[size_t(id)] = float(H - centre);
+      }
+      ++landed;
+      if (schedule.due(landed)) emit_frame(in, field, landed, released, schedule);
+    };
+    // paper §7 in the device's water, as the DEM releases and drops its
+    // grains: they leave in falling order at dem.release_rate and land in
+    // the order they reach the pile (Eq. 1 to the outlet, then the class's
+    // settling speed down to the surface as it is at release). A unit's small
+    // grains land after its big ones and cap its pile, as in the DEM.
+    const bool settling = s.lattice.arrival == LatticeArrival::Settling;
+    const Water water = settling ? water_model(s) : Water{};
+    Arrivals arrivals;
+    std::vector<double> exit_at(settling ? in.grains.size() : 0);
     for (size_t u = 0; u < in.seg.units.size(); ++u) {
       const Outlet o = outlet(model, in.seg.units[u]);
       for (int64_t i = in.order.unit_begin[u]; i < in.order.unit_begin[u + 1]; ++i) {
         const int32_t id = in.order.grain[size_t(i)];
-        const uint8_t k = in.grains.cls[size_t(id)];
-        int c = std::clamp(int(std::floor(exit_x(model, o, id) * columns_per_px)), 0, columns - 1);
-        c = field.settle(c, rule_of[k], seed, uint64_t(id));
-        double rise = area[k] * columns_per_px;
-        if (field.height(c) + rise > H) c = field.room_near(c, rise);
-        if (c >= 0) {  // else no room anywhere: the grain stays unaccounted (NaN)
-          double centre = field.deposit(c, k, area[k]);
-          out.x[size_t(id)] = float((c + 0.5) / columns_per_px);
-          out.y[size_t(id)] = float(H - centre);
+        if (!settling) {
+          released = i + 1;
+          land(id, exit_x(model, o, id));
+          continue;
         }
-        if (schedule.due(i + 1)) emit_frame(in, field, i + 1, schedule);
+        const double t = double(i) / s.dem.release_rate;
+        released = i;  // the landings due before grain i leaves
+        for (; !arrivals.empty() && arrivals.top().time <= t; arrivals.pop()) {
+          const int32_t first = in.order.grain[size_t(arrivals.top().order)];
+          land(first, exit_at[size_t(first)]);
+        }
+        released = i + 1;
+        const ReleasePath path = release(model, o, in.grains, id);
+        exit_at[size_t(id)] = path.exit_x;
+        const int c = std::clamp(int(std::floor(path.exit_x * columns_per_px)), 0, columns - 1);
+        const double settling_px_s = water.terminal_px_s[in.grains.cls[size_t(id)]];
+        arrivals.push({arrival_time(t, path, H - o.centre.y(), field.height(c), settling_px_s), i});
       }
-      progress.update(in.order.unit_begin[u + 1]);
+      progress.update(landed);
+    }
+    for (; !arrivals.empty(); arrivals.pop()) {
+      const int32_t id = in.order.grain[size_t(arrivals.top().order)];
+      land(id, exit_at[size_t(id)]);
     }
     progress.finish();
-    out.class_map = field.class_map(W, H, kNoSand);
+    out.class_map = field.class_map(W, H, kNoSand, s.lattice.surface_px);
     if (schedule.count > 0) in.frames.frame(out.class_map);  // the last frame is the picture
     out.stats["columns"] = columns;
     out.stats["pile_max_height_px"] = field.max_height();

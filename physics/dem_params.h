@@ -3,7 +3,7 @@
 // and the solver's (masses), shared by the simulator and the tests.
 #include <array>
 
-#include "physics/water.h"
+#include "src/water.h"
 #include "src/scene.h"
 
 namespace sandpic {

@@ -14,7 +14,7 @@
 #include "physics/layers.h"
 #include "physics/raster.h"
 #include "physics/stiffness.h"
-#include "physics/water.h"
+#include "src/water.h"
 #include "physics/world.h"
 #include "src/errors.h"
 #include "src/frames.h"
@@ -23,12 +23,6 @@
 namespace sandpic {
 
 namespace {
-
-struct Arrival {
-  double time;
-  int64_t order;  // index in the falling order: ties keep the falling order
-  bool operator>(const Arrival& o) const { return time != o.time ? time > o.time : order > o.order; }
-};
 
 // The run ends when all but kUnsettled of the bodies have moved less than
 // kSettlePx (px) over the last kSettleCycles cycles: under 2 px/s at the
@@ -92,7 +86,7 @@ class DemRun {
   std::vector<float> x_, y_;  // settled centre, window px (y down)
 
   std::vector<int32_t> dynamic_, statics_;  // ids: dynamic lowest first as of the last cycle, then arrivals
-  std::priority_queue<Arrival, std::vector<Arrival>, std::greater<>> arrivals_;
+  Arrivals arrivals_;
   std::vector<float> landed_;   // tops of slow dynamic grains, per column, this cycle
   int64_t released_ = 0, inserted_ = 0, settled_ = 0, fixed_ = 0, delayed_ = 0;
   int64_t resting_ = 0;  // bodies at rest after the last cycle
@@ -169,10 +163,8 @@ void DemRun::release_stage() {
     const int k = in_.grains.cls[size_t(id)];
     const Outlet& o = outlets_[size_t(unit_of_order_[size_t(released_)])];
     ReleasePath path = release(model_, o, in_.grains, id);
-    double outlet_up = H_ - o.centre.y();
-    double drop = outlet_up - (surface(path.exit_x, radius_[k]) + s_.dem.insert_gap_diameters * 2 * radius_[k]);
-    double fall = water_.terminal_px_s[k] > 0 ? std::max(0.0, drop) / water_.terminal_px_s[k] : 0;
-    arrivals_.push({t_ + path.t + fall, released_});
+    const double land = surface(path.exit_x, radius_[k]) + s_.dem.insert_gap_diameters * 2 * radius_[k];
+    arrivals_.push({arrival_time(t_, path, H_ - o.centre.y(), land, water_.terminal_px_s[k]), released_});
     ++released_;
   }
 }

@@ -35,6 +35,12 @@ ReleasePath release(const ReleaseModel& m, const Outlet& o, const GrainSet& g, i
   return p;
 }
 
+double arrival_time(double t_release, const ReleasePath& p, double outlet_up_px, double land_px, double settling_px_s) {
+  const double drop = outlet_up_px - land_px;
+  const double fall = settling_px_s > 0 ? std::max(0.0, drop) / settling_px_s : 0;
+  return t_release + p.t + fall;
+}
+
 double exit_x(const ReleaseModel& m, const Outlet& o, int32_t id) {
   return o.centre.x() + (uniform(m.physics_seed, Stream::OutletJitter, uint64_t(id)) - 0.5) * o.width;
 }

@@ -21,6 +21,8 @@ enum class TessellationKind { Uniform, Varying, Strips };
 enum class SegmentMethod { Ellipses, Explicit, Cells, Sketch, Pattern };
 enum class Mode { Lattice, Dem };
 enum class Layers { Three, Bcre, AllDynamic };  // paper §8: layer models of the DEM mode
+// Lattice: grains land in the order they reach the pile (settling) or in falling order (release).
+enum class LatticeArrival { Settling, Release };
 
 // A line drawn in the window, in px (x right, y down), as its corner points.
 using Polyline = std::vector<std::array<double, 2>>;
@@ -144,7 +146,14 @@ struct Scene {
     // Area a grain takes in the lattice's pile as a multiple of grain_area_px:
     // the DEM's piles pack looser than units.packing (calibrate measures it).
     double bulk = 1.0;
+    // The DEM's piles end in a loose, rough layer of about the same thickness
+    // at every size: the lattice's top 10 px are drawn this much thicker
+    // (calibrate fits it with bulk from two pile sizes).
+    double surface_px = 0;
     std::string calibration;  // `sandpic calibrate` output whose "lattice" values replace these
+    // paper §7 + the water: grains land in the order they reach the pile, at
+    // dem.release_rate and their class's settling speed, as in the DEM.
+    LatticeArrival arrival = LatticeArrival::Settling;
   } lattice;
   struct Dem {
     Layers layers = Layers::Three;

@@ -283,7 +283,16 @@ ordered_json to_json(const Scene& s) {
 std::string scene_digest(const Scene& s) {
   ordered_json j = to_json(s);
   j.erase("description");
-  j.erase(s.mode == Mode::Dem ? "lattice" : "dem");
+  if (s.mode == Mode::Dem) {
+    j.erase("lattice");
+  } else {
+    // The lattice reads the device's release rate and water (the order in
+    // which grains land, lattice.arrival), not the rest of the DEM's keys.
+    ordered_json device = ordered_json::object();
+    for (const char* key : {"release_rate", "water", "water_density_g_cm3", "water_viscosity_pa_s"})
+      device[key] = j["dem"][key];
+    j["dem"] = device;
+  }
   const std::string text = j.dump();
   uint64_t h = 1469598103934665603ull;  // FNV-1a, 64 bit
   for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <optional>
 
 #include <Eigen/Core>
 #include <tbb/parallel_for.h>
@@ -16,6 +17,7 @@
 #include "src/init/init.h"
 #include "src/pipeline.h"
 #include "src/segment/segment.h"
+#include "validate/kept_runs.h"
 #include "validate/layer_bench.h"
 #include "validate/silhouette.h"
 
@@ -50,7 +52,7 @@ std::vector<std::vector<int>> physics_groups(const Scene& s) {
 
 struct Params {
   std::vector<double> angle, runout;  // per group
-  double bulk = 1;
+  double bulk = 1, surface = 0;
 };
 
 class Fit {
@@ -88,6 +90,7 @@ class Fit {
       for (int k : groups_[g]) deg[size_t(k)] = p.angle[g], s.lattice.runout_px[size_t(k)] = p.runout[g];
     s.lattice.repose_deg = deg;
     s.lattice.bulk = p.bulk;
+    s.lattice.surface_px = p.surface;
   }
 
  private:
@@ -144,18 +147,41 @@ Params fit_angles(Fit& fit, Params p) {
   return fit.error(out) < best ? out : p;  // LM on a step function can wander: keep the better
 }
 
-// Area: the lattice's pile holds exactly the grains' area, so the ratio of
-// mean heights is the bulk that matches the DEM's looser packing.
-Params fit_bulk(Fit& fit, std::vector<Target>& targets, Params p) {
+// Area: the lattice's pile holds exactly the grains' area, so its mean
+// height against the DEM's sets lattice.bulk. The DEM's piles also end in a
+// loose, rough layer of about constant thickness (a larger share of a low
+// pile): with piles of two or more sizes, mean DEM height = bulk · packed
+// height + surface is fitted by least squares (Eigen); with one size the
+// surface stays as it is and the bulk takes it all.
+Params fit_bulk(Fit& fit, std::vector<Target>& targets, Params p, bool sizes) {
   for (int round = 0; round < 2; ++round) {
-    double lat = 0, dem = 0;
-    Eigen::VectorXd r = fit.residuals(p);  // lattice − DEM
+    Eigen::VectorXd r = fit.residuals(p);  // lattice − DEM, over the window height
+    Eigen::MatrixXd A(targets.size(), 2);
+    Eigen::VectorXd b(targets.size());
     int i = 0;
-    for (auto& t : targets)
-      for (auto& d : t.dem)
-        for (double h : d) dem += h / t.scene.window.height, lat += h / t.scene.window.height + r[i++];
-    if (lat <= 0) break;
-    p.bulk = std::clamp(p.bulk * dem / lat, 0.25, 4.0);
+    for (size_t t = 0; t < targets.size(); ++t) {
+      const double H = targets[t].scene.window.height;
+      double dem = 0, lat = 0, sand = 0, n = 0;
+      for (auto& d : targets[t].dem)
+        for (double h : d) dem += h, lat += h + r[i++] * H, sand += h > 0, n += 1;
+      // The lattice's height without its surface layer, per column.
+      A(long(t), 0) = (lat - p.surface * sand) / n;
+      A(long(t), 1) = sand / n;
+      b(long(t)) = dem / n;
+    }
+    double scale = 1, surface = p.surface;
+    if (sizes) {
+      Eigen::Vector2d x = A.colPivHouseholderQr().solve(b);
+      scale = x(0), surface = x(1);
+    }
+    if (!sizes || surface < 0) {  // the bulk alone, with the surface kept (or none)
+      surface = std::max(0.0, surface);
+      Eigen::VectorXd rest = b - surface * A.col(1);
+      scale = A.col(0).dot(rest) / std::max(A.col(0).squaredNorm(), 1e-12);
+    }
+    if (!(scale > 0) || !std::isfinite(surface)) break;
+    p.bulk = std::clamp(p.bulk * scale, 0.25, 4.0);
+    p.surface = std::clamp(surface, 0.0, 100.0);
   }
   return p;
 }
@@ -178,25 +204,28 @@ Params fit_runout(Fit& fit, Params p) {
 
 std::vector<Scene> calibration_scenes(const Scene& base, const CalibrateOptions& opt) {
   if (opt.scenes < 1) throw InputError("--scenes must be at least 1");
-  if (opt.grains < 100) throw InputError("--grains must be at least 100");
+  if (opt.grains.empty()) throw InputError("--grains needs at least one size");
+  for (int64_t g : opt.grains)
+    if (g < 100) throw InputError("--grains must be at least 100");
   const double base_grains = double(initialize(base).grains.size());
   if (base_grains <= 0) throw InputError("the scene has no grains to calibrate on");
   const TessellationKind kinds[] = {TessellationKind::Varying, TessellationKind::Uniform, TessellationKind::Strips};
   std::vector<Scene> out;
-  for (int i = 0; i < opt.scenes; ++i) {
-    Scene s = base;
-    s.lattice.calibration.clear();
-    s.layout_seed = base.layout() + 1000 + uint64_t(i);
-    if (s.init.method == InitMethod::Tessellation) s.init.tessellation = kinds[i % 3];
-    const double scale = std::sqrt(double(opt.grains) / base_grains);
-    try {
-      if (std::abs(scale - 1) > 1e-9) apply_scale(s, scale);
-    } catch (const InputError& e) {
-      throw InputError("--grains " + std::to_string(opt.grains) + " does not fit this scene: " + e.what());
+  for (int64_t grains : opt.grains)
+    for (int i = 0; i < opt.scenes; ++i) {
+      Scene s = base;
+      s.lattice.calibration.clear();
+      s.layout_seed = base.layout() + 1000 + uint64_t(i);
+      if (s.init.method == InitMethod::Tessellation) s.init.tessellation = kinds[i % 3];
+      const double scale = std::sqrt(double(grains) / base_grains);
+      try {
+        if (std::abs(scale - 1) > 1e-9) apply_scale(s, scale);
+      } catch (const InputError& e) {
+        throw InputError("--grains " + std::to_string(grains) + " does not fit this scene: " + e.what());
+      }
+      validate(s);
+      out.push_back(s);
     }
-    validate(s);
-    out.push_back(s);
-  }
   return out;
 }
 
@@ -222,13 +251,22 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
     Scene s = targets[j / per].scene;
     s.mode = Mode::Dem;
     s.physics_seed = opt.physics_seeds[j % per];
-    auto dem = make(s);
-    RunResult r = run_pipeline(s, *dem, RunOptions{});
-    maps[j] = r.class_map;
-    seconds[j] = r.stats["timing"]["simulate_s"].get<double>();
+    const std::string label = "dem-" + std::to_string(targets[j / per].init.grains.size()) + "-layout-" +
+                              std::to_string(s.layout()) + "-seed-" + std::to_string(s.physics_rng());
+    std::optional<KeptRun> kept = load_kept(opt.runs_dir, label, s);
+    if (kept && !kept->class_map.empty()) {
+      maps[j] = kept->class_map;
+      seconds[j] = kept->stats["timing"]["simulate_s"].get<double>();
+    } else {
+      auto dem = make(s);
+      RunResult r = run_pipeline(s, *dem, RunOptions{});
+      if (!opt.runs_dir.empty()) keep_run(opt.runs_dir, label, r);
+      maps[j] = r.class_map;
+      seconds[j] = r.stats["timing"]["simulate_s"].get<double>();
+    }
     std::lock_guard lock(mu);
-    log("DEM pile " + std::to_string(j + 1) + "/" + std::to_string(jobs) + ": " +
-        std::to_string(r.stats["grains"]["total"].get<int64_t>()) + " grains, " + std::to_string(seconds[j]) + " s");
+    log("DEM pile " + std::to_string(j + 1) + "/" + std::to_string(jobs) + ": " + label + ", " +
+        std::to_string(seconds[j]) + " s" + (kept ? " (kept from an earlier run)" : ""));
   });
   Calibration c;
   double floor_sum = 0;
@@ -260,13 +298,19 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
     p.runout.push_back(base.lattice.runout_px[size_t(g[0])]);
   }
   p.bulk = base.lattice.bulk;
+  p.surface = base.lattice.surface_px;
   c.error_before = fit.error(p);
+  // Two pile sizes at least (their heights a quarter apart) tell the
+  // surface layer from the bulk.
+  double low = INFINITY, high = 0;
+  for (auto& t : targets) low = std::min(low, double(t.scene.region.height)), high = std::max(high, double(t.scene.region.height));
+  const bool sizes = high > 1.25 * low;
   log("lattice before: silhouette error " + std::to_string(c.error_before) + " (DEM seed to seed " +
       std::to_string(c.noise_floor) + ")");
   // Bulk first (it sets the mean height), then shape: angles, run-out, and
   // the angles again on the new run-out.
   for (int round = 0; round < 2; ++round) {
-    p = fit_bulk(fit, targets, p);
+    p = fit_bulk(fit, targets, p, sizes);
     p = fit_angles(fit, p);
     p = fit_runout(fit, p);
     log("round " + std::to_string(round + 1) + ": silhouette error " + std::to_string(fit.error(p)));
@@ -277,6 +321,7 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   c.repose_deg = *applied.lattice.repose_deg;
   c.runout_px = applied.lattice.runout_px;
   c.bulk = p.bulk;
+  c.surface_px = p.surface;
   c.lattice_runs = fit.runs();
   return c;
 }
@@ -287,6 +332,7 @@ ordered_json calibration_json(const Scene& base, const Calibration& c) {
   j["lattice"]["repose_deg"] = c.repose_deg;
   j["lattice"]["runout_px"] = c.runout_px;
   j["lattice"]["bulk"] = c.bulk;
+  j["lattice"]["surface_px"] = c.surface_px;
   ordered_json& f = j["fit"];
   f["physics"] = {{"friction", base.physics.friction},
                   {"restitution", base.physics.restitution},

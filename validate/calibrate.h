@@ -17,9 +17,13 @@ namespace sandpic {
 using SimulatorFactory = std::function<std::unique_ptr<Simulator>(const Scene&)>;
 
 struct CalibrateOptions {
-  int64_t grains = 8000;                  // each calibration scene scaled to about this many grains
+  // Each variant at each of these sizes (grains, about): two or more sizes
+  // separate the DEM's loose surface layer (lattice.surface_px, the same at
+  // every size) from its bulk (lattice.bulk, a share of the pile's height).
+  std::vector<int64_t> grains = {8000};
   int scenes = 3;                         // variants of the scene (layout seed and tessellation)
   std::vector<uint64_t> physics_seeds = {1, 2};  // DEM runs per variant
+  std::string runs_dir;                   // DEM piles kept here and reused while their digest holds ("": none)
 };
 
 // The scenes the fit runs on: the scene's physics (friction, restitution,
@@ -29,7 +33,7 @@ std::vector<Scene> calibration_scenes(const Scene& base, const CalibrateOptions&
 
 struct Calibration {
   std::array<double, kClasses> repose_deg{}, runout_px{};
-  double bulk = 1;
+  double bulk = 1, surface_px = 0;
   std::vector<std::vector<int>> groups;  // classes the DEM cannot tell apart share their values
   double error_before = 0, error_after = 0;  // mean silhouette error, lattice vs each DEM run
   double noise_floor = 0;                    // mean silhouette error between DEM seeds of one scene

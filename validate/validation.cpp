@@ -13,6 +13,7 @@
 #include "src/errors.h"
 #include "src/output.h"
 #include "src/pipeline.h"
+#include "validate/kept_runs.h"
 #include "validate/layer_bench.h"
 #include "validate/silhouette.h"
 
@@ -33,28 +34,6 @@ std::string num(const char* f, double v) {
 
 ordered_json finite(double v) { return std::isfinite(v) ? ordered_json(v) : ordered_json(nullptr); }
 
-// A DEM run is kept as runs/<label>.png + .json (its stats, with the scene
-// digest): rerunning validate with more seeds or a new lattice reuses it.
-bool load_cached(const std::string& dir, const Job& j, ValidationRun& r) {
-  if (dir.empty()) return false;
-  const std::string png = dir + "/" + j.label + ".png", js = dir + "/" + j.label + ".json";
-  const std::optional<std::string> text = read_text(js);
-  if (!text) return false;
-  ordered_json stats = ordered_json::parse(*text, nullptr, false);
-  if (stats.is_discarded() || stats.value("scene_digest", "") != scene_digest(j.scene)) return false;
-  cv::Mat img = cv::imread(png, cv::IMREAD_COLOR);
-  if (img.empty() || img.cols != j.scene.window.width || img.rows != j.scene.window.height) return false;
-  try {
-    r.picture = img;
-    r.simulate_s = stats.at("timing").at("simulate_s").get<double>();
-    r.grains = stats.at("grains").at("total").get<int64_t>();
-  } catch (const std::exception&) {
-    return false;
-  }
-  r.cached = true;
-  return true;
-}
-
 // A run's names, before it runs (and all of a skipped one).
 ValidationRun describe(const Job& j) {
   ValidationRun r;
@@ -66,17 +45,19 @@ ValidationRun describe(const Job& j) {
 ValidationRun run_job(const Job& j, const ValidateOptions& opt, const SimulatorFactory& make) {
   ValidationRun r = describe(j);
   if (!r.skipped.empty()) return r;
-  if (load_cached(opt.cache_dir, j, r)) return r;
+  if (std::optional<KeptRun> kept = load_kept(opt.cache_dir, j.label, j.scene)) {
+    r.picture = kept->picture;
+    r.simulate_s = kept->stats["timing"]["simulate_s"].get<double>();
+    r.grains = kept->stats["grains"]["total"].get<int64_t>();
+    r.cached = true;
+    return r;
+  }
   auto sim = make(j.scene);
   RunResult out = run_pipeline(j.scene, *sim, RunOptions{});
   r.picture = out.picture;
   r.simulate_s = out.stats["timing"]["simulate_s"].get<double>();
   r.grains = out.stats["grains"]["total"].get<int64_t>();
-  if (!opt.cache_dir.empty()) {
-    write_atomic(opt.cache_dir + "/" + j.label + ".png",
-                 std::string_view(reinterpret_cast<const char*>(out.png.data()), out.png.size()));
-    write_atomic(opt.cache_dir + "/" + j.label + ".json", out.stats.dump(2) + "\n");
-  }
+  if (!opt.cache_dir.empty()) keep_run(opt.cache_dir, j.label, out);
   return r;
 }
 
@@ -134,6 +115,9 @@ std::vector<Job> lattice_sweep(const Scene& lat) {
   });
   for (double f : {0.95, 1.05})
     add("lattice.bulk=" + g(eff.lattice.bulk * f), [&](Scene& s) { s.lattice.bulk *= f; });
+  add("lattice.surface_px=" + g(eff.lattice.surface_px + 2), [&](Scene& s) { s.lattice.surface_px += 2; });
+  if (eff.lattice.arrival == LatticeArrival::Settling)  // what landing in falling order would cost
+    add("lattice.arrival=release", [](Scene& s) { s.lattice.arrival = LatticeArrival::Release; });
   return jobs;
 }
 

@@ -115,8 +115,7 @@ struct ValidateCommand {
 
 struct CalibrateCommand {
   SceneOptions scene;
-  std::string out, seeds = "1,2";
-  int64_t grains = 8000;
+  std::string out, seeds = "1,2", grains = "8000", runs;
   int scenes = 3;
 
   void add_to(CLI::App& app) {
@@ -124,7 +123,10 @@ struct CalibrateCommand {
         "calibrate", "fit the lattice's rule values (angle of repose, run-out, bulk) to DEM piles of variants of a scene");
     scene.add_to(cmd);
     cmd->add_option("--out", out, "the calibration (JSON); a scene uses it through lattice.calibration")->required();
-    cmd->add_option("--grains", grains, "grains per calibration scene")->capture_default_str()->check(CLI::Range(int64_t(100), int64_t(10000000)));
+    cmd->add_option("--grains", grains,
+                    "grains per calibration scene, comma-separated sizes (two or more also fit lattice.surface_px)")
+        ->capture_default_str();
+    cmd->add_option("--runs", runs, "keep the DEM piles in this folder and reuse them while their scene digest holds");
     cmd->add_option("--scenes", scenes, "calibration scenes (other layouts and tessellations of the scene)")
         ->capture_default_str()->check(CLI::Range(1, 100));
     cmd->add_option("--seeds", seeds, "DEM physics seeds per calibration scene, comma-separated (two or more)")
@@ -135,20 +137,25 @@ struct CalibrateCommand {
   void run() {
     Scene s = scene.build();
     CalibrateOptions opt;
-    opt.grains = grains;
+    opt.grains = list_option<int64_t>("--grains", grains, [](const std::string& i) {
+      return int64_t(positive("--grains", i, 10000000));
+    });
+    opt.runs_dir = runs;
     opt.scenes = scenes;
     opt.physics_seeds = list_option<uint64_t>("--seeds", seeds, [](const std::string& i) {
       return uint64_t(positive("--seeds", i, 9007199254740991));
     });
     need_dem(s, "calibrate");
     check_writable(out);
+    if (!opt.runs_dir.empty()) check_folder(opt.runs_dir);
     auto threads = limit_threads(scene.threads);
     Calibration c = calibrate(s, opt, make_any, logger("calibrate"));
     write_atomic(out, calibration_json(s, c).dump(2) + "\n");
-    std::printf("sandpic calibrate: %zu scenes x %zu DEM seeds, %lld lattice runs\n", size_t(opt.scenes),
+    std::printf("sandpic calibrate: %zu scenes x %zu DEM seeds, %lld lattice runs\n", c.scenes.size(),
                 opt.physics_seeds.size(), (long long)c.lattice_runs);
-    std::printf("repose_deg %.2f %.2f %.2f %.2f  runout_px %g %g %g %g  bulk %.4f\n", c.repose_deg[0], c.repose_deg[1],
-                c.repose_deg[2], c.repose_deg[3], c.runout_px[0], c.runout_px[1], c.runout_px[2], c.runout_px[3], c.bulk);
+    std::printf("repose_deg %.2f %.2f %.2f %.2f  runout_px %g %g %g %g  bulk %.4f  surface_px %.2f\n", c.repose_deg[0],
+                c.repose_deg[1], c.repose_deg[2], c.repose_deg[3], c.runout_px[0], c.runout_px[1], c.runout_px[2],
+                c.runout_px[3], c.bulk, c.surface_px);
     std::printf("silhouette error on the calibration scenes: %.5f before, %.5f after (DEM seed to seed %.5f)\n",
                 c.error_before, c.error_after, c.noise_floor);
   }

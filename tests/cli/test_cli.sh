@@ -154,6 +154,13 @@ if [ "$BULLET" = with-bullet ]; then
   if grep -q '"calibration"' "$T/cal-stats.json"; then ok; else bad "calibrated stats: $(cat "$T/cal-stats.json")"; fi
   expect 2 "calibrate too few grains" -- "$BIN" calibrate --grains 100 --out "$T/c2.json"
   one_line; err_has "--grains"; absent "$T/c2.json"
+  # Two sizes fit the surface layer; --runs keeps the DEM piles and a second fit reuses them.
+  expect 0 "calibrate two sizes" -- "$BIN" calibrate "${TINY[@]}" --grains 300,700 --scenes 1 --runs "$T/calruns" --out "$T/cal2.json"
+  if grep -q '"surface_px"' "$T/cal2.json" && [ "$(ls "$T/calruns" | grep -c '\.classes\.png$')" = 4 ]; then ok; else bad "cal2: $(ls "$T/calruns")"; fi
+  expect 0 "calibrate kept runs" -- "$BIN" calibrate "${TINY[@]}" --grains 300,700 --scenes 1 --runs "$T/calruns" --out "$T/cal3.json"
+  if cmp -s "$T/cal2.json" "$T/cal3.json"; then ok; else bad "a refit from kept runs differs"; fi
+  expect 2 "calibrate bad size list" -- "$BIN" calibrate --grains 8000,x --out "$T/c3.json"
+  one_line; err_has "--grains"; absent "$T/c3.json"
   expect 2 "validate few seeds" -- "$BIN" validate "${TINY[@]}" --seeds 3 --out "$T/val"
   one_line; err_has "--seeds"; absent "$T/val/report.html"
 else

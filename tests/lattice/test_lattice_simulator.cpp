@@ -82,7 +82,8 @@ TEST(LatticeSimulator, EveryGrainSettlesInThePicture) {
 // grains not yet released, and the pile the area of those released (to a
 // pixel per column: the class map samples pixel centres).
 TEST(LatticeSimulator, FramesAccountForEveryGrain) {
-  const Scene s = test::one_ellipse_scene();
+  Scene s = test::one_ellipse_scene();
+  s.lattice.arrival = LatticeArrival::Release;  // landings in falling order: each frame's pile is known
   Initialization init = initialize(s);
   Segmentation seg = segment(s, init.tessellation);
   FallingOrder order = falling_order(seg, init.grains, s.layout());
@@ -105,6 +106,79 @@ TEST(LatticeSimulator, FramesAccountForEveryGrain) {
     EXPECT_EQ(cv::countNonZero(f(region) != kNoSand), total - released) << "frame " << k;
     EXPECT_NEAR(cv::countNonZero(f(below) != kNoSand), area, s.window.width) << "frame " << k;
   }
+}
+
+// How much higher the small grains (S3, S4) lie than the big ones: the
+// difference of their mean heights over the mean height of all.
+double small_above_big(const Scene& s) {
+  Initialization init = initialize(s);
+  Segmentation seg = segment(s, init.tessellation);
+  FallingOrder order = falling_order(seg, init.grains, s.layout());
+  Progress quiet(false);
+  SimResult r = make_lattice_simulator()->simulate(SimInput{s, init.grains, seg, order}, quiet);
+  double sum[2] = {0, 0}, n[2] = {0, 0};
+  for (size_t i = 0; i < r.y.size(); ++i) {
+    const int small = init.grains.cls[i] >= 2;
+    sum[small] += s.window.height - r.y[i], n[small] += 1;
+  }
+  return (sum[1] / n[1] - sum[0] / n[0]) / ((sum[0] + sum[1]) / (n[0] + n[1]));
+}
+
+// paper §7 in water: a unit's small grains sink at a quarter of the big ones'
+// speed, so they land last and cap its pile, as in the DEM.
+TEST(LatticeSimulator, SmallGrainsLandLastAndCapThePile) {
+  Scene s = test::one_ellipse_scene();
+  s.lattice.arrival = LatticeArrival::Release;
+  const double in_order = small_above_big(s);
+  s.lattice.arrival = LatticeArrival::Settling;
+  const double settling = small_above_big(s);
+  std::printf("small grains' mean height over big grains': %+.2f in falling order, %+.2f settling\n", in_order,
+              settling);
+  EXPECT_LT(std::abs(in_order), 0.05);
+  EXPECT_GT(settling, in_order + 0.1);
+}
+
+// Landings that never overlap (no water: grains drop in a tenth of a
+// second; one grain a second) are the falling order itself: the same bytes
+// as lattice.arrival = release.
+TEST(LatticeSimulator, SettlingWithNoOverlapIsTheFallingOrder) {
+  Scene s = test::one_ellipse_scene(200, 150, 40);
+  s.dem.water = false;
+  s.dem.release_rate = 1;
+  SimResult a = test::simulate_scene(s, *make_lattice_simulator());
+  s.lattice.arrival = LatticeArrival::Release;
+  SimResult b = test::simulate_scene(s, *make_lattice_simulator());
+  EXPECT_EQ(cv::norm(a.class_map, b.class_map, cv::NORM_INF), 0);
+  s.dem.release_rate = 4000;  // and they do overlap at the default rate
+  s.lattice.arrival = LatticeArrival::Settling;
+  SimResult c = test::simulate_scene(s, *make_lattice_simulator());
+  EXPECT_GT(cv::norm(c.class_map, b.class_map, cv::NORM_L1), 0);
+}
+
+// Frames of a settling run: the region empties as grains leave and the last
+// frame is the picture; grains on their way down are in neither.
+TEST(LatticeSimulator, SettlingFramesEmptyTheRegionInOrder) {
+  const Scene s = test::one_ellipse_scene();
+  Initialization init = initialize(s);
+  Segmentation seg = segment(s, init.tessellation);
+  FallingOrder order = falling_order(seg, init.grains, s.layout());
+  std::vector<cv::Mat> frames;
+  SimInput in{s, init.grains, seg, order};
+  in.frames = {9, [&](const cv::Mat& m) { frames.push_back(m.clone()); }};
+  Progress quiet(false);
+  SimResult r = make_lattice_simulator()->simulate(in, quiet);
+  ASSERT_EQ(frames.size(), 9u);
+  EXPECT_EQ(cv::norm(frames.back(), r.class_map, cv::NORM_INF), 0);
+  const int64_t total = init.grains.size();
+  const cv::Rect region(0, 0, s.window.width, s.region.height);
+  int64_t last = total + 1;
+  for (int k = 0; k < 9; ++k) {
+    const int64_t waiting = cv::countNonZero(frames[size_t(k)](region) != kNoSand);
+    EXPECT_LE(waiting, total - frame_released(total, 9, k)) << "frame " << k;  // landed ones have left
+    EXPECT_LE(waiting, last) << "frame " << k;
+    last = waiting;
+  }
+  EXPECT_EQ(last, 0);
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "physics/dem_params.h"
-#include "physics/water.h"
+#include "src/water.h"
 #include "physics/ground.h"
 #include "physics/world.h"
 

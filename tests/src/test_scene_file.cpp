@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "src/errors.h"
 #include "src/scene_file.h"
@@ -203,6 +204,22 @@ TEST(SceneFile, DigestNamesWhatTheModeReads) {
   c.physics_seed = 2;
   EXPECT_NE(scene_digest(a), scene_digest(c));
   EXPECT_EQ(scene_digest(a).size(), 16u);
+}
+
+TEST(SceneFile, LatticeDigestReadsTheDevicesReleaseAndWaterOnly) {
+  Scene a;  // lattice mode
+  Scene b = a;
+  b.dem.solver_iterations = 11;  // the DEM's own: not read
+  b.dem.layers = Layers::Bcre;
+  EXPECT_EQ(scene_digest(a), scene_digest(b));
+  for (auto change : std::vector<std::function<void(Scene&)>>{
+           [](Scene& s) { s.dem.release_rate = 8000; }, [](Scene& s) { s.dem.water = false; },
+           [](Scene& s) { s.dem.water_density_g_cm3 = 1.1; }, [](Scene& s) { s.dem.water_viscosity_pa_s = 2e-3; },
+           [](Scene& s) { s.lattice.arrival = LatticeArrival::Release; }}) {
+    Scene c = a;
+    change(c);
+    EXPECT_NE(scene_digest(a), scene_digest(c));
+  }
 }
 
 TEST(SceneFile, ScaleKeepsTheRunOut) {

@@ -21,7 +21,7 @@ TEST(Calibrate, ScenesAreOtherLayoutsOfTheSamePhysics) {
   Scene base;
   base.physics.friction = 0.7;
   CalibrateOptions opt;
-  opt.grains = 3000;
+  opt.grains = {3000};
   auto scenes = calibration_scenes(base, opt);
   ASSERT_EQ(scenes.size(), 3u);
   for (const Scene& s : scenes) {
@@ -32,6 +32,11 @@ TEST(Calibrate, ScenesAreOtherLayoutsOfTheSamePhysics) {
   }
   EXPECT_EQ(scenes[1].init.tessellation, TessellationKind::Uniform);
   EXPECT_EQ(scenes[2].init.tessellation, TessellationKind::Strips);
+  opt.grains = {3000, 12000};  // each variant at each size
+  scenes = calibration_scenes(base, opt);
+  ASSERT_EQ(scenes.size(), 6u);
+  EXPECT_EQ(scenes[4].layout(), scenes[1].layout());
+  EXPECT_NEAR(double(initialize(scenes[4]).grains.size()), 12000, 1200);
 }
 
 // A small fit end to end: the fitted lattice is closer to the DEM's piles
@@ -39,7 +44,7 @@ TEST(Calibrate, ScenesAreOtherLayoutsOfTheSamePhysics) {
 TEST(Calibrate, FitLowersTheSilhouetteErrorAndAppliesThroughTheScene) {
   Scene base;
   CalibrateOptions opt;
-  opt.grains = 2600;
+  opt.grains = {2600};
   opt.scenes = 1;
   opt.physics_seeds = {1, 2};
   Calibration c = calibrate(base, opt, backends(), [](const std::string&) {});

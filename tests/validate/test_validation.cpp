@@ -66,7 +66,12 @@ TEST(Validation, RunsTheEnsembleKeepsItAndReportsEveryMetric) {
     lattice_points += r.group == "sweep-lattice";
   }
   EXPECT_TRUE(skipped_all_dynamic);
-  EXPECT_GE(lattice_points, 6);
+  EXPECT_GE(lattice_points, 8);
+  auto swept = [&](const std::string& setting) {
+    return std::any_of(v.sweep.begin(), v.sweep.end(), [&](const ValidationRun& r) { return r.setting == setting; });
+  };
+  EXPECT_TRUE(swept("lattice.arrival=release"));
+  EXPECT_TRUE(swept("lattice.surface_px=2"));
   EXPECT_FALSE(v.heat_map.empty());
   for (const ValidationRun& d : v.dem) EXPECT_FALSE(d.cached);
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "physics/water.h"
+#include "src/water.h"
 
 namespace sandpic {
 namespace {

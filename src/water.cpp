@@ -1,4 +1,4 @@
-#include "physics/water.h"
+#include "src/water.h"
 
 #include <cmath>
 
