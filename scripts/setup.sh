@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-PACKAGES=(g++ cmake make pkgconf libeigen3-dev libopencv-dev libtbb-dev libbullet-dev
+PACKAGES=(g++ cmake make pkgconf libeigen3-dev libopencv-dev libtbb-dev libbullet-dev libcpp-httplib-dev
           libgtest-dev libcli11-dev nlohmann-json3-dev)
 for arg in "$@"; do
   case "$arg" in

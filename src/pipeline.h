@@ -1,6 +1,7 @@
 #pragma once
 // The pipeline: initialize → segment → order → simulate → render, each a free
 // function over plain data, timed into the stats (paper Table 1's columns).
+#include <atomic>
 #include <functional>
 #include <vector>
 
@@ -13,6 +14,9 @@ namespace sandpic {
 struct RunOptions {
   bool stages = false;    // keep the intermediate pictures of Fig. 2
   bool progress = false;  // draw a progress bar on stderr
+  // The simulation's done / total, kept up to date for another thread (the
+  // studio's render status); nullptr: none.
+  std::atomic<double>* fraction = nullptr;
   // paper Fig. 14c-d: `frames` pictures of the fall (8-bit BGR, window
   // size, drawn as the final picture is), handed to `frame` one at a time
   // as the backend makes them: the caller streams them out. The last one is

@@ -15,6 +15,7 @@ void Progress::start(const std::string& label, int64_t total) {
 }
 
 void Progress::update(int64_t done) {
+  if (fraction_ && total_ > 0) fraction_->store(double(done) / double(total_), std::memory_order_relaxed);
   if (!enabled_) return;
   auto now = std::chrono::steady_clock::now();
   if (now - last_ < std::chrono::milliseconds(100)) return;
@@ -37,6 +38,7 @@ void Progress::draw(int64_t done) {
 }
 
 void Progress::finish() {
+  if (fraction_) fraction_->store(1.0, std::memory_order_relaxed);
   if (!enabled_) return;
   draw(total_);
   std::fprintf(stderr, "\n");

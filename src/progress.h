@@ -1,5 +1,6 @@
 #pragma once
 // A progress bar for long work, on stderr when it is a terminal only.
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <string>
@@ -8,7 +9,10 @@ namespace sandpic {
 
 class Progress {
  public:
-  explicit Progress(bool enabled) : enabled_(enabled) {}
+  // `fraction`, when given, is kept at done / total for another thread to
+  // read (the studio's render status), whether or not a bar is drawn.
+  explicit Progress(bool enabled, std::atomic<double>* fraction = nullptr)
+      : enabled_(enabled), fraction_(fraction) {}
   static bool stderr_is_terminal();
 
   void start(const std::string& label, int64_t total);
@@ -18,6 +22,7 @@ class Progress {
  private:
   void draw(int64_t done);
   bool enabled_;
+  std::atomic<double>* fraction_;
   std::string label_;
   int64_t total_ = 0;
   std::chrono::steady_clock::time_point start_, last_;

@@ -93,5 +93,7 @@ std::unique_ptr<tbb::global_control> limit_threads(int n);
 std::shared_ptr<void> add_validation_commands(CLI::App& app);
 // sandpic stress (issue 6).
 std::shared_ptr<void> add_stress_command(CLI::App& app);
+// sandpic studio (issue 7).
+std::shared_ptr<void> add_studio_command(CLI::App& app);
 
 }  // namespace sandpic

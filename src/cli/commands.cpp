@@ -374,6 +374,7 @@ int cli_main(int argc, char** argv) {
   compare.add_to(app);
   auto validation = add_validation_commands(app);
   auto stress = add_stress_command(app);
+  auto studio = add_studio_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

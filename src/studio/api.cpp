@@ -1,0 +1,121 @@
+#include "src/studio/api.h"
+
+#include <filesystem>
+
+#include "src/init/init.h"
+#include "src/pipeline.h"
+#include "src/segment/segment.h"
+
+namespace sandpic::studio {
+
+namespace fs = std::filesystem;
+
+Reply error_reply(const std::string& message, int status) {
+  Reply r;
+  r.status = status;
+  r.body = ordered_json{{"error", message}, {"key", key_of(message)}}.dump();
+  return r;
+}
+
+Reply json_reply(const ordered_json& doc) {
+  Reply r;
+  r.body = doc.dump();
+  return r;
+}
+
+std::string key_of(const std::string& message) {
+  // The innermost key: "scene file 'x': scene key 'a.b': ..." names a.b.
+  const std::string mark = "scene key '";
+  const size_t at = message.find(mark);
+  if (at == std::string::npos) return "";
+  const size_t from = at + mark.size(), to = message.find('\'', from);
+  return to == std::string::npos ? "" : message.substr(from, to - from);
+}
+
+void check_inside(const std::string& root, const std::string& path, const std::string& key) {
+  if (path.empty()) return;
+  const fs::path base = fs::weakly_canonical(fs::absolute(root));
+  const fs::path p = fs::weakly_canonical(fs::absolute(base / path));
+  const auto [b, _] = std::mismatch(base.begin(), base.end(), p.begin(), p.end());
+  if (b != base.end()) throw key_error(key, "'" + path + "' is outside the studio's folder " + base.string());
+}
+
+namespace {
+
+// Every file a scene may open, with its key: the studio reads none outside
+// its working folder (a page could otherwise ask for any file on the machine).
+void check_paths(const Scene& s, const std::string& root, const std::string& prefix = "") {
+  check_inside(root, s.init.image, prefix + "init.image");
+  check_inside(root, s.segment.sketch.image, prefix + "segment.sketch.image");
+  check_inside(root, s.lattice.calibration, prefix + "lattice.calibration");
+  check_inside(root, s.render.background, prefix + "render.background");
+  for (size_t i = 0; i < s.render.figures.size(); ++i)
+    check_inside(root, s.render.figures[i].mask, prefix + "render.figures[" + std::to_string(i) + "].mask");
+}
+
+}  // namespace
+
+Scene scene_from_request(const std::string& body, const std::string& root) {
+  if (body.size() > kMaxRequestBytes)
+    throw InputError("request of " + std::to_string(body.size()) + " bytes is over the limit of " +
+                     std::to_string(kMaxRequestBytes));
+  Scene s = scene_from_text(body, "request", root);
+  validate(s);
+  check_paths(s, root);
+  for (size_t i = 0; i < s.regions.size(); ++i)
+    check_paths(area_scene(s, i), root, "regions[" + std::to_string(i) + "].");
+  return s;
+}
+
+double scale_param(const std::string& text) {
+  if (text.empty()) return 1;
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+  }
+  if (used != text.size() || !(v > 0 && v <= 4)) throw InputError("scale: '" + text + "' is not a number in (0, 4]");
+  return v;
+}
+
+Scene scaled(Scene s, double scale) {
+  if (scale == 1) return s;
+  apply_scale(s, scale);
+  validate(s);
+  return s;
+}
+
+Reply scene_reply(const Scene& s) { return json_reply(to_json(s)); }
+
+Reply complete_scene(const std::string& body, const std::string& root) {
+  return scene_reply(scene_from_request(body, root));
+}
+
+Reply preview(const std::string& body, const std::string& root, double scale) {
+  Scene s = scaled(scene_from_request(body, root), scale);
+  s.mode = Mode::Lattice;  // a preview is always the lattice's; the DEM is the final render
+  auto sim = make_simulator(s);
+  RunResult run = run_pipeline(s, *sim, RunOptions{});
+  Reply r;
+  r.content_type = "image/png";
+  r.body.assign(reinterpret_cast<const char*>(run.png.data()), run.png.size());
+  r.headers["X-Sandpic-Stats"] = run.stats.dump();
+  return r;
+}
+
+Reply units(const std::string& body, const std::string& root) {
+  const Scene s = scene_from_request(body, root);
+  const Initialization init = initialize(s);
+  const Segmentation seg = segment(s, init.tessellation);
+  ordered_json ellipses = ordered_json::array(), cells = ordered_json::array();
+  for (const Unit& u : seg.units) {
+    if (u.is_ellipse)
+      ellipses.push_back({u.ellipse.c.x(), u.ellipse.c.y(), u.ellipse.a, u.ellipse.b, u.ellipse.theta});
+    else
+      cells.push_back({u.x0, u.y0, u.x1, u.y1});
+  }
+  return json_reply({{"ellipses", ellipses}, {"cells", cells}});
+}
+
+}  // namespace sandpic::studio
