@@ -21,6 +21,10 @@ struct StudioCommand {
   }
 
   void run() {
+    // The page runs renders and reads files under the working folder: open
+    // to anyone who can reach the address.
+    if (opt.host != "127.0.0.1" && opt.host != "localhost" && opt.host != "::1")
+      std::fprintf(stderr, "sandpic: note: --host %s: the studio is reachable from other machines\n", opt.host.c_str());
     studio::Server server(opt);
     const int port = server.bind();
     std::printf("sandpic studio: http://%s:%d/  (Ctrl-C to stop; final renders go to %s/)\n", opt.host.c_str(), port,

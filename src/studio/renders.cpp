@@ -22,7 +22,7 @@ int Renders::start(const Scene& s) {
   auto probe = make_simulator(s);
   std::lock_guard lock(mutex_);
   if (worker_.joinable()) {
-    if (!jobs_.rbegin()->second->done) throw InputError("a final render is already running (one at a time)");
+    if (!jobs_.rbegin()->second->done) throw Busy("a final render is already running (one at a time)");
     worker_.join();
   }
   check_folder(dir_);

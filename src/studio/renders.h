@@ -14,6 +14,11 @@
 
 namespace sandpic::studio {
 
+// A final render asked for while one runs: the server answers 409.
+struct Busy : InputError {
+  using InputError::InputError;
+};
+
 struct RenderJob {
   int id = 0;
   std::string stem;  // file names in the renders' folder: stem.png, .json, .stats.json
@@ -28,8 +33,8 @@ class Renders {
   explicit Renders(std::string dir) : dir_(std::move(dir)) {}
   ~Renders();  // waits for a running render: its picture is still written
 
-  // Starts rendering `s` in s.mode; throws InputError if one is running, or
-  // the mode cannot run in this build (no Bullet: names the key 'mode').
+  // Starts rendering `s` in s.mode; throws Busy if one is running, InputError
+  // if the mode cannot run in this build (no Bullet: names the key 'mode').
   int start(const Scene& s);
   // nullptr for an unknown id.
   std::shared_ptr<const RenderJob> job(int id) const;

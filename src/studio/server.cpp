@@ -21,6 +21,8 @@ namespace {
 Reply guarded(const std::function<Reply()>& f) {
   try {
     return f();
+  } catch (const Busy& e) {
+    return error_reply(e.what(), 409);
   } catch (const InputError& e) {
     return error_reply(e.what());
   } catch (const nlohmann::json::exception& e) {  // a value no key check caught

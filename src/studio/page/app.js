@@ -128,7 +128,7 @@ const App = {
   },
 
   // A preset is a base the scene's own keys override: start from the preset
-  // alone, keeping the window, the region, the colours and the seeds.
+  // alone, keeping the window, the region and the seed.
   async loadPreset(name) {
     const s = this.scene;
     const base = { preset: name, window: s.window, region: s.region, seed: s.seed };

@@ -1,0 +1,124 @@
+// The studio's request functions, without HTTP (issue 7).
+#include "src/studio/api.h"
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include "tests/src/studio/studio_test_util.h"
+
+namespace sandpic::studio {
+namespace {
+
+// The reply the server sends for what `f` throws.
+template <class F>
+Reply reply_of(F f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    return error_reply(e.what());
+  }
+}
+
+cv::Mat decode(const Reply& r) {
+  return cv::imdecode(cv::Mat(1, int(r.body.size()), CV_8U, const_cast<char*>(r.body.data())), cv::IMREAD_COLOR);
+}
+
+TEST(StudioApi, ABadValueIsA400NamingItsKey) {
+  const std::string root = test::studio_folder("badkey");
+  const Reply r = reply_of([&] { return preview(R"({"physics": {"friction": -1}})", root); });
+  EXPECT_EQ(r.status, 400);
+  const json body = json::parse(r.body);
+  EXPECT_EQ(body["key"], "physics.friction");
+  EXPECT_NE(body["error"].get<std::string>().find("scene key 'physics.friction'"), std::string::npos);
+}
+
+TEST(StudioApi, AnUnknownKeyIsNamedToo) {
+  const Reply r = reply_of([&] { return preview(R"({"physics": {"frictoin": 0.4}})", "."); });
+  EXPECT_EQ(r.status, 400);
+  EXPECT_EQ(json::parse(r.body)["key"], "physics.frictoin");
+}
+
+TEST(StudioApi, MalformedJsonIsA400WithoutKey) {
+  const Reply r = reply_of([&] { return preview("{\"physics\": ", "."); });
+  EXPECT_EQ(r.status, 400);
+  EXPECT_EQ(json::parse(r.body)["key"], "");
+}
+
+TEST(StudioApi, KeyOfTakesTheSceneKey) {
+  EXPECT_EQ(key_of("scene file 'request': scene key 'region.height': must be in [1, 20000]"), "region.height");
+  EXPECT_EQ(key_of("no key here"), "");
+}
+
+TEST(StudioApi, APreviewIsAPngOfTheWindowsSize) {
+  const std::string root = test::studio_folder("preview");
+  const Reply r = preview("{}", root, 0.2);  // the default scene at 200 x 140
+  EXPECT_EQ(r.status, 200);
+  EXPECT_EQ(r.content_type, "image/png");
+  const cv::Mat img = decode(r);
+  ASSERT_FALSE(img.empty());
+  EXPECT_EQ(img.cols, 200);
+  EXPECT_EQ(img.rows, 140);
+  const json stats = json::parse(r.headers.at("X-Sandpic-Stats"));
+  EXPECT_EQ(stats["mode"], "lattice");
+  EXPECT_EQ(stats["window"], json({200, 140}));
+}
+
+TEST(StudioApi, APreviewIsTheLatticesEvenForADemScene) {
+  const Reply r = preview(R"({"mode": "dem"})", ".", 0.2);
+  EXPECT_EQ(json::parse(r.headers.at("X-Sandpic-Stats"))["mode"], "lattice");
+}
+
+TEST(StudioApi, SameSceneAndSeedSameBytes) {
+  const std::string body = R"({"seed": 7, "physics": {"friction": 0.6}})";
+  const Reply a = preview(body, ".", 0.2), b = preview(body, ".", 0.2);
+  EXPECT_EQ(a.body, b.body);
+  const Reply c = preview(R"({"seed": 8, "physics": {"friction": 0.6}})", ".", 0.2);
+  EXPECT_NE(a.body, c.body);
+}
+
+TEST(StudioApi, ARequestPastTheSizeBoundIsRefusedUnread) {
+  const std::string body = "{\"description\": \"" + std::string(kMaxRequestBytes, 'x') + "\"}";
+  try {
+    scene_from_request(body, ".");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("over the limit"), std::string::npos) << e.what();
+  }
+}
+
+TEST(StudioApi, PathsOutsideTheWorkingFolderAreRefused) {
+  const std::string root = test::studio_folder("paths");
+  for (const char* body : {R"({"init": {"method": "halftone", "image": "../secret.png"}})",
+                           R"({"init": {"image": "/etc/passwd"}})",
+                           R"({"render": {"background": "a/../../b.png"}})"}) {
+    const Reply r = reply_of([&] { return json_reply(to_json(scene_from_request(body, root))); });
+    EXPECT_EQ(r.status, 400) << body;
+    const json err = json::parse(r.body);
+    EXPECT_NE(err["error"].get<std::string>().find("outside the studio's folder"), std::string::npos) << r.body;
+    EXPECT_FALSE(err["key"].get<std::string>().empty()) << r.body;
+  }
+  EXPECT_NO_THROW(check_inside(root, "inputs/picture.png", "init.image"));
+  EXPECT_THROW(check_inside(root, "../x.png", "init.image"), InputError);
+}
+
+TEST(StudioApi, TheScaleParameterIsChecked) {
+  EXPECT_EQ(scale_param(""), 1);
+  EXPECT_EQ(scale_param("0.5"), 0.5);
+  for (const char* bad : {"0", "-1", "5", "abc", "0.5x", "nan"}) EXPECT_THROW(scale_param(bad), InputError) << bad;
+}
+
+TEST(StudioApi, UnitsAreTheSegmentationsEllipses) {
+  const json u = json::parse(units("{}", ".").body);
+  ASSERT_FALSE(u["ellipses"].empty());
+  EXPECT_EQ(u["ellipses"][0].size(), 5u);
+  EXPECT_TRUE(json::parse(units(R"({"segment": {"method": "cells"}})", ".").body)["ellipses"].empty());
+}
+
+TEST(StudioApi, ACompleteSceneHasEveryKey) {
+  const json s = json::parse(complete_scene(R"({"physics": {"friction": 0.7}})", ".").body);
+  EXPECT_EQ(s["physics"]["friction"], 0.7);
+  EXPECT_EQ(s["window"]["width"], 1000);
+}
+
+}  // namespace
+}  // namespace sandpic::studio

@@ -1,0 +1,73 @@
+// Final renders in the background: one at a time, status with a fraction,
+// and the finished picture kept on disk (issue 7).
+#include "src/studio/renders.h"
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "src/studio/api.h"
+#include "tests/src/studio/studio_test_util.h"
+
+namespace sandpic::studio {
+namespace {
+
+std::shared_ptr<const RenderJob> wait_done(const Renders& r, int id) {
+  for (int i = 0; i < 6000; ++i) {
+    auto job = r.job(id);
+    if (job->done) return job;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return nullptr;
+}
+
+TEST(StudioRenders, AFinishedRenderIsKeptOnDisk) {
+  const std::string dir = test::studio_folder("renders") + "/studio-renders";
+  Renders renders(dir);
+  // The lattice mode: the same path as the DEM's, in a fraction of the time.
+  const int id = renders.start(scaled(scene_from_request("{}", "."), 0.2));
+  auto job = wait_done(renders, id);
+  ASSERT_TRUE(job);
+  EXPECT_EQ(job->error, "");
+  EXPECT_TRUE(std::filesystem::is_regular_file(job->picture)) << job->picture;
+  const ordered_json st = status_json(*job);
+  EXPECT_EQ(st["done"], true);
+  EXPECT_EQ(st["fraction"], 1.0);
+  // The scene and stats beside it, and no temporary file left.
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    ++files;
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+  }
+  EXPECT_EQ(files, 3);
+  EXPECT_EQ(renders.job(id + 1), nullptr);
+}
+
+TEST(StudioRenders, OneAtATime) {
+  Renders renders(test::studio_folder("one") + "/r");
+  const Scene s = scene_from_request("{}", ".");  // full size: long enough to overlap
+  const int id = renders.start(s);
+  EXPECT_THROW(renders.start(s), Busy);
+  ASSERT_TRUE(wait_done(renders, id));
+  EXPECT_NO_THROW(wait_done(renders, renders.start(scaled(s, 0.2))));
+}
+
+TEST(StudioRenders, TheDemModeNeedsBullet) {
+  Renders renders(test::studio_folder("dem") + "/r");
+  const Scene s = scene_from_request(R"({"mode": "dem"})", ".");
+#if SANDPIC_WITH_BULLET
+  SUCCEED() << "this build has the DEM";
+#else
+  try {
+    renders.start(s);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(key_of(e.what()), "mode");
+  }
+#endif
+}
+
+}  // namespace
+}  // namespace sandpic::studio
