@@ -219,6 +219,22 @@ expect 2 "figure mask missing" -- "$BIN" render -o "$T/fg.png" --set \
   "render.figures=[{\"mask\": \"$T/nothing.png\"}]"
 one_line; err_has "render.figures\[0\].mask"; absent "$T/fg.png"
 
+# Issue 7: sandpic studio. A bad starting scene is refused before it listens;
+# a good one prints its loopback address and serves the page there.
+printf '{"physics": {"friction": -1}}\n' >"$T/bad-studio.json"
+expect 2 "studio bad scene" -- "$BIN" studio "$T/bad-studio.json" --port 0
+one_line; err_has "physics.friction"
+"$BIN" studio --port 0 --renders "$T/studio-renders" >"$T/studio.out" 2>"$T/studio.err" &
+studio_pid=$!
+for _ in $(seq 50); do grep -q http "$T/studio.out" 2>/dev/null && break; sleep 0.1; done
+url=$(grep -o 'http://127.0.0.1:[0-9]*/' "$T/studio.out")
+if [ -n "$url" ]; then ok; else bad "studio printed no loopback address: $(cat "$T/studio.out" "$T/studio.err")"; fi
+if command -v curl >/dev/null && [ -n "$url" ]; then
+  if curl -s "$url" | grep -q "sandpic studio"; then ok; else bad "studio page not served at $url"; fi
+fi
+kill "$studio_pid" 2>/dev/null
+wait "$studio_pid" 2>/dev/null
+
 # Every example renders (scaled down).
 for scene in "$ROOT"/examples/*.json; do
   expect 0 "example $(basename "$scene")" -- "$BIN" render "$scene" -o "$T/ex.png" --scale 0.3
