@@ -122,6 +122,12 @@ class LatticeSimulator final : public Simulator {
     const Water water = settling ? water_model(s) : Water{};
     Arrivals arrivals;
     std::vector<double> exit_at(settling ? in.grains.size() : 0);
+    auto land_until = [&](double t) {
+      for (; !arrivals.empty() && arrivals.top().time <= t; arrivals.pop()) {
+        const int32_t id = in.order.grain[size_t(arrivals.top().order)];
+        land(id, exit_at[size_t(id)]);
+      }
+    };
     for (size_t u = 0; u < in.seg.units.size(); ++u) {
       const Outlet o = outlet(model, in.seg.units[u]);
       for (int64_t i = in.order.unit_begin[u]; i < in.order.unit_begin[u + 1]; ++i) {
@@ -133,10 +139,7 @@ class LatticeSimulator final : public Simulator {
         }
         const double t = double(i) / s.dem.release_rate;
         released = i;  // the landings due before grain i leaves
-        for (; !arrivals.empty() && arrivals.top().time <= t; arrivals.pop()) {
-          const int32_t first = in.order.grain[size_t(arrivals.top().order)];
-          land(first, exit_at[size_t(first)]);
-        }
+        land_until(t);
         released = i + 1;
         const ReleasePath path = release(model, o, in.grains, id);
         exit_at[size_t(id)] = path.exit_x;
@@ -146,10 +149,7 @@ class LatticeSimulator final : public Simulator {
       }
       progress.update(landed);
     }
-    for (; !arrivals.empty(); arrivals.pop()) {
-      const int32_t id = in.order.grain[size_t(arrivals.top().order)];
-      land(id, exit_at[size_t(id)]);
-    }
+    land_until(INFINITY);
     progress.finish();
     out.class_map = field.class_map(W, H, kNoSand, s.lattice.surface_px);
     if (schedule.count > 0) in.frames.frame(out.class_map);  // the last frame is the picture

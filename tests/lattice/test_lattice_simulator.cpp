@@ -77,6 +77,25 @@ TEST(LatticeSimulator, EveryGrainSettlesInThePicture) {
   EXPECT_EQ(r.stats["grains"]["total"].get<int64_t>(), 400 * 80);
 }
 
+// A lattice run of the scene with `count` frames of its fall kept.
+struct FramedRun {
+  Initialization init;
+  FallingOrder order;
+  std::vector<cv::Mat> frames;
+  SimResult result;
+};
+FramedRun framed_run(const Scene& s, int count) {
+  FramedRun run;
+  run.init = initialize(s);
+  Segmentation seg = segment(s, run.init.tessellation);
+  run.order = falling_order(seg, run.init.grains, s.layout());
+  SimInput in{s, run.init.grains, seg, run.order};
+  in.frames = {count, [&](const cv::Mat& m) { run.frames.push_back(m.clone()); }};
+  Progress quiet(false);
+  run.result = make_lattice_simulator()->simulate(in, quiet);
+  return run;
+}
+
 // paper Fig. 14c-d: in every frame each grain is either waiting at its
 // pixel in the region or part of the pile: the region holds exactly the
 // grains not yet released, and the pile the area of those released (to a
@@ -84,24 +103,18 @@ TEST(LatticeSimulator, EveryGrainSettlesInThePicture) {
 TEST(LatticeSimulator, FramesAccountForEveryGrain) {
   Scene s = test::one_ellipse_scene();
   s.lattice.arrival = LatticeArrival::Release;  // landings in falling order: each frame's pile is known
-  Initialization init = initialize(s);
-  Segmentation seg = segment(s, init.tessellation);
-  FallingOrder order = falling_order(seg, init.grains, s.layout());
-  std::vector<cv::Mat> frames;
-  SimInput in{s, init.grains, seg, order};
-  in.frames = {9, [&](const cv::Mat& m) { frames.push_back(m.clone()); }};
-  Progress quiet(false);
-  SimResult r = make_lattice_simulator()->simulate(in, quiet);
+  const FramedRun run = framed_run(s, 9);
+  const std::vector<cv::Mat>& frames = run.frames;
   ASSERT_EQ(frames.size(), 9u);
-  EXPECT_EQ(cv::norm(frames.back(), r.class_map, cv::NORM_INF), 0);
-  const int64_t total = init.grains.size();
+  EXPECT_EQ(cv::norm(frames.back(), run.result.class_map, cv::NORM_INF), 0);
+  const int64_t total = run.init.grains.size();
   const cv::Rect region(0, 0, s.window.width, s.region.height);
   const cv::Rect below(0, s.region.height, s.window.width, s.window.height - s.region.height);
   double area = 0;
   int64_t released = 0;
   for (int k = 0; k < 9; ++k) {
     for (int64_t end = frame_released(total, 9, k); released < end; ++released)
-      area += lattice_area_px(s, init.grains.cls[size_t(order.grain[size_t(released)])]);
+      area += lattice_area_px(s, run.init.grains.cls[size_t(run.order.grain[size_t(released)])]);
     const cv::Mat& f = frames[size_t(k)];
     EXPECT_EQ(cv::countNonZero(f(region) != kNoSand), total - released) << "frame " << k;
     EXPECT_NEAR(cv::countNonZero(f(below) != kNoSand), area, s.window.width) << "frame " << k;
@@ -111,15 +124,11 @@ TEST(LatticeSimulator, FramesAccountForEveryGrain) {
 // How much higher the small grains (S3, S4) lie than the big ones: the
 // difference of their mean heights over the mean height of all.
 double small_above_big(const Scene& s) {
-  Initialization init = initialize(s);
-  Segmentation seg = segment(s, init.tessellation);
-  FallingOrder order = falling_order(seg, init.grains, s.layout());
-  Progress quiet(false);
-  SimResult r = make_lattice_simulator()->simulate(SimInput{s, init.grains, seg, order}, quiet);
+  const FramedRun run = framed_run(s, 0);
   double sum[2] = {0, 0}, n[2] = {0, 0};
-  for (size_t i = 0; i < r.y.size(); ++i) {
-    const int small = init.grains.cls[i] >= 2;
-    sum[small] += s.window.height - r.y[i], n[small] += 1;
+  for (size_t i = 0; i < run.result.y.size(); ++i) {
+    const int small = run.init.grains.cls[i] >= 2;
+    sum[small] += s.window.height - run.result.y[i], n[small] += 1;
   }
   return (sum[1] / n[1] - sum[0] / n[0]) / ((sum[0] + sum[1]) / (n[0] + n[1]));
 }
@@ -159,17 +168,11 @@ TEST(LatticeSimulator, SettlingWithNoOverlapIsTheFallingOrder) {
 // frame is the picture; grains on their way down are in neither.
 TEST(LatticeSimulator, SettlingFramesEmptyTheRegionInOrder) {
   const Scene s = test::one_ellipse_scene();
-  Initialization init = initialize(s);
-  Segmentation seg = segment(s, init.tessellation);
-  FallingOrder order = falling_order(seg, init.grains, s.layout());
-  std::vector<cv::Mat> frames;
-  SimInput in{s, init.grains, seg, order};
-  in.frames = {9, [&](const cv::Mat& m) { frames.push_back(m.clone()); }};
-  Progress quiet(false);
-  SimResult r = make_lattice_simulator()->simulate(in, quiet);
+  const FramedRun run = framed_run(s, 9);
+  const std::vector<cv::Mat>& frames = run.frames;
   ASSERT_EQ(frames.size(), 9u);
-  EXPECT_EQ(cv::norm(frames.back(), r.class_map, cv::NORM_INF), 0);
-  const int64_t total = init.grains.size();
+  EXPECT_EQ(cv::norm(frames.back(), run.result.class_map, cv::NORM_INF), 0);
+  const int64_t total = run.init.grains.size();
   const cv::Rect region(0, 0, s.window.width, s.region.height);
   int64_t last = total + 1;
   for (int k = 0; k < 9; ++k) {
