@@ -19,6 +19,11 @@ struct SimulationError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A run stopped on request (the studio's cancel button): nothing is written.
+struct Cancelled : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // A check that caught sandpic breaking one of its own promises (sandpic
 // stress): exit code 1.
 struct CheckFailed : std::runtime_error {

@@ -67,7 +67,7 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
   FallingOrder order = falling_order(seg, init.grains, s.layout());
   timing["order_s"] = clock.lap();
 
-  Progress progress(opt.progress, opt.fraction);
+  Progress progress(opt.progress, opt.fraction, opt.cancel);
   SimInput in{s, init.grains, seg, order, opt.stages};
   int frames = 0;
   double frames_s = 0;  // a part of simulate_s

@@ -17,6 +17,9 @@ struct RunOptions {
   // The simulation's done / total, kept up to date for another thread (the
   // studio's render status); nullptr: none.
   std::atomic<double>* fraction = nullptr;
+  // Set by another thread to stop the run: run_pipeline throws Cancelled at
+  // the backend's next progress update. nullptr: the run cannot be stopped.
+  const std::atomic<bool>* cancel = nullptr;
   // paper Fig. 14c-d: `frames` pictures of the fall (8-bit BGR, window
   // size, drawn as the final picture is), handed to `frame` one at a time
   // as the backend makes them: the caller streams them out. The last one is
@@ -34,8 +37,8 @@ struct RunResult {
   Stages stages;
 };
 
-// Throws InputError (bad scene or file) or SimulationError (a grain lost, a
-// NaN): nothing is returned that should not be written.
+// Throws InputError (bad scene or file), SimulationError (a grain lost, a
+// NaN) or Cancelled (opt.cancel set): nothing is returned that should not be written.
 RunResult run_pipeline(const Scene& s, Simulator& sim, const RunOptions& opt);
 
 }  // namespace sandpic

@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+#include "src/errors.h"
+
 namespace sandpic {
 
 bool Progress::stderr_is_terminal() { return isatty(STDERR_FILENO) == 1; }
@@ -15,6 +17,7 @@ void Progress::start(const std::string& label, int64_t total) {
 }
 
 void Progress::update(int64_t done) {
+  if (cancel_ && cancel_->load(std::memory_order_relaxed)) throw Cancelled("cancelled");
   if (fraction_ && total_ > 0) fraction_->store(double(done) / double(total_), std::memory_order_relaxed);
   if (!enabled_) return;
   auto now = std::chrono::steady_clock::now();

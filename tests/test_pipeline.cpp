@@ -138,5 +138,27 @@ TEST(PipelineFrames, NoneUnlessAsked) {
   EXPECT_EQ(f.run.stats["frames"], 0);
 }
 
+// The studio's cancel button: a run asked to stop throws Cancelled at the
+// backend's next progress update, in either mode, and returns nothing.
+TEST(PipelineCancel, AStoppedRunThrowsCancelledInEitherMode) {
+  const std::atomic<bool> stop{true};
+  for (const Mode mode : {Mode::Lattice, Mode::Dem}) {
+    Scene s = preview();
+    s.mode = mode;
+#if !SANDPIC_WITH_BULLET
+    if (mode == Mode::Dem) continue;
+#endif
+    RunOptions opt;
+    opt.cancel = &stop;
+    EXPECT_THROW(run_pipeline(s, *make_simulator(s), opt), Cancelled) << int(mode);
+  }
+  // Not set: the run goes to the end.
+  const std::atomic<bool> go{false};
+  RunOptions opt;
+  opt.cancel = &go;
+  const Scene s = preview();
+  EXPECT_EQ(run_pipeline(s, *make_simulator(s), opt).stats["grains"]["in_picture"], 250 * 88);
+}
+
 }  // namespace
 }  // namespace sandpic

@@ -55,6 +55,31 @@ void check_paths(const Scene& s, const std::string& root, const std::string& pre
 
 }  // namespace
 
+namespace {
+
+bool loopback(const std::string& name) { return name == "127.0.0.1" || name == "localhost" || name == "::1"; }
+
+// "localhost" from "localhost:8080", "::1" from "[::1]:8080".
+std::string host_name(const std::string& host_port) {
+  if (host_port.starts_with('[')) return host_port.substr(1, host_port.find(']') - 1);
+  return host_port.substr(0, host_port.find(':'));
+}
+
+}  // namespace
+
+std::string refusal(const std::string& listen_host, const std::string& method, const std::string& host_header,
+                    const std::string& origin) {
+  if (!loopback(listen_host)) return "";
+  if (!host_header.empty() && !loopback(host_name(host_header)))
+    return "Host '" + host_header + "' is not this studio's address: open it as http://" + listen_host + ":PORT/";
+  if (method != "GET" && method != "HEAD" && !origin.empty()) {
+    const std::string scheme = "http://";
+    if (!origin.starts_with(scheme) || !loopback(host_name(origin.substr(scheme.size()))))
+      return "a request from the page of '" + origin + "' is refused: only the studio's own page may change it";
+  }
+  return "";
+}
+
 Scene scene_from_request(const std::string& body, const std::string& root) {
   if (body.size() > kMaxRequestBytes)
     throw InputError("request of " + std::to_string(body.size()) + " bytes is over the limit of " +
@@ -115,7 +140,13 @@ Reply units(const std::string& body, const std::string& root) {
     else
       cells.push_back({u.x0, u.y0, u.x1, u.y1});
   }
-  return json_reply({{"ellipses", ellipses}, {"cells", cells}});
+  // paper §3, "users may further edit colors in the cells": the scene's own
+  // cells (not an area's, Fig. 17), numbered as init.cell_overrides counts
+  // them, with the classes they hold (1-based, as in scene files).
+  ordered_json tess = ordered_json::array();
+  for (const Cell& c : init.tessellation.cells)
+    if (c.area == 0) tess.push_back({c.x0, c.y0, c.x1, c.y1, c.dominant + 1, c.secondary + 1});
+  return json_reply({{"ellipses", ellipses}, {"cells", cells}, {"tessellation", tess}});
 }
 
 }  // namespace sandpic::studio

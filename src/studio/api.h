@@ -41,6 +41,15 @@ Scene scaled(Scene s, double scale);
 // Throws InputError naming `key` if `path`, from `root`, leads outside it.
 void check_inside(const std::string& root, const std::string& path, const std::string& key);
 
+// DNS rebinding and cross-site requests: a studio listening on loopback
+// answers only requests addressed to a loopback name (the Host header), and
+// takes a POST only from its own page (the Origin header, when the browser
+// sends one), so a web page on another site the designer has open cannot
+// read the studio or start renders. A studio told to listen elsewhere
+// (--host) checks neither. "" when the request may go on, else why not.
+std::string refusal(const std::string& listen_host, const std::string& method, const std::string& host_header,
+                    const std::string& origin);
+
 // The scene the page starts from, as JSON (every key).
 Reply scene_reply(const Scene& s);
 // POST /api/scene: the complete scene (every key) a body describes: a
@@ -52,7 +61,9 @@ Reply complete_scene(const std::string& body, const std::string& root);
 Reply preview(const std::string& body, const std::string& root, double scale = 1);
 // POST /api/units: the falling units the scene's segmentation yields, to
 // draw over the sketch: {"ellipses": [[cx, cy, a, b, theta], ...],
-// "cells": [[x0, y0, x1, y1], ...]} in window px.
+// "cells": [[x0, y0, x1, y1], ...], "tessellation": [[x0, y0, x1, y1,
+// dominant, secondary], ...]} in window px; the tessellation's cells are
+// numbered as init.cell_overrides numbers them (empty for halftone).
 Reply units(const std::string& body, const std::string& root);
 
 }  // namespace sandpic::studio

@@ -45,6 +45,14 @@ std::shared_ptr<const RenderJob> Renders::job(int id) const {
   return it == jobs_.end() ? nullptr : it->second;
 }
 
+bool Renders::cancel(int id) {
+  std::lock_guard lock(mutex_);
+  auto it = jobs_.find(id);
+  if (it == jobs_.end() || it->second->done) return false;
+  it->second->cancel = true;
+  return true;
+}
+
 void Renders::run(const Scene& s, std::shared_ptr<RenderJob> job) {
   // Two cores: the DEM gets one thread at a lower priority, so the live
   // preview (the other core, TBB's default arena) stays within its few
@@ -56,6 +64,7 @@ void Renders::run(const Scene& s, std::shared_ptr<RenderJob> job) {
       auto sim = make_simulator(s);
       RunOptions opt;
       opt.fraction = &job->fraction;
+      opt.cancel = &job->cancel;
       RunResult run = run_pipeline(s, *sim, opt);
       const std::string base = dir_ + "/" + job->stem;
       write_atomic(base + ".json", to_json(s).dump(2));
@@ -63,6 +72,9 @@ void Renders::run(const Scene& s, std::shared_ptr<RenderJob> job) {
       write_atomic(base + ".png", std::string_view(reinterpret_cast<const char*>(run.png.data()), run.png.size()));
       job->picture = base + ".png";
     });
+  } catch (const Cancelled&) {
+    job->cancelled = true;
+    job->error = "cancelled";
   } catch (const std::exception& e) {
     job->error = e.what();
   }
@@ -73,6 +85,7 @@ ordered_json status_json(const RenderJob& job) {
   const bool done = job.done;  // read first: error and picture are set before it
   return {{"id", job.id},
           {"done", done},
+          {"cancelled", done && job.cancelled},
           {"fraction", done && job.error.empty() ? 1.0 : job.fraction.load()},
           {"error", done ? job.error : ""},
           {"picture", done ? job.picture : ""}};

@@ -24,6 +24,8 @@ struct RenderJob {
   std::string stem;  // file names in the renders' folder: stem.png, .json, .stats.json
   std::atomic<double> fraction{0};
   std::atomic<bool> done{false};
+  std::atomic<bool> cancel{false};  // asked to stop: the run stops at its next progress update
+  bool cancelled = false;           // set before done, when it stopped on request (nothing written)
   std::string error;    // set before done, when it failed
   std::string picture;  // path of the PNG, set before done, when it succeeded
 };
@@ -38,6 +40,10 @@ class Renders {
   int start(const Scene& s);
   // nullptr for an unknown id.
   std::shared_ptr<const RenderJob> job(int id) const;
+  // Asks render `id` to stop; false if there is no such render or it is
+  // done already. The worker is free for the next render once the job says
+  // done (within one progress update: a DEM step cycle).
+  bool cancel(int id);
   const std::string& dir() const { return dir_; }
 
  private:
@@ -49,7 +55,7 @@ class Renders {
   int next_id_ = 1;
 };
 
-// {"id", "done", "fraction", "error", "picture"} for GET /api/render/<id>.
+// {"id", "done", "cancelled", "fraction", "error", "picture"} for GET /api/render/<id>.
 ordered_json status_json(const RenderJob& job);
 
 }  // namespace sandpic::studio

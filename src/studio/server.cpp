@@ -8,6 +8,7 @@
 #include <httplib.h>
 
 #include "src/output.h"
+#include "src/studio/animation.h"
 #include "src/studio/api.h"
 #include "src/studio/page.h"
 #include "src/studio/renders.h"
@@ -67,6 +68,7 @@ struct Server::Impl {
   Scene start;
   Renders renders;
   LatestOnly previews;
+  LatestOnly animations;  // apart: playing the fall must not supersede the preview
   httplib::Server http;
   int port = 0;
 
@@ -80,6 +82,12 @@ struct Server::Impl {
 
   void routes() {
     http.set_payload_max_length(kMaxRequestBytes);
+    http.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+      const std::string why = refusal(opt.host, req.method, req.get_header_value("Host"), req.get_header_value("Origin"));
+      if (why.empty()) return httplib::Server::HandlerResponse::Unhandled;
+      send(res, error_reply(why, 403));
+      return httplib::Server::HandlerResponse::Handled;
+    });
     http.Get("/", [](const httplib::Request&, httplib::Response& res) { page(res, "index.html"); });
     http.Get(R"(/([a-z0-9-]+\.(?:html|js|css)))", [](const httplib::Request& req, httplib::Response& res) {
       page(res, req.matches[1].str());
@@ -87,6 +95,15 @@ struct Server::Impl {
     http.Get("/api/scene", [this](const httplib::Request&, httplib::Response& res) { send(res, scene_reply(start)); });
     http.Post("/api/preview", [this](const httplib::Request& req, httplib::Response& res) {
       send(res, previews.run([&] { return guarded([&] { return preview(req.body, opt.root, scale_param(req.get_param_value("scale"))); }); }));
+    });
+    http.Post("/api/animation", [this](const httplib::Request& req, httplib::Response& res) {
+      send(res, animations.run([&] {
+             return guarded([&] {
+               const AnimationRequest a = animation_request(req.get_param_value("frames"), req.get_param_value("scale"),
+                                                            req.get_param_value("fps"), req.get_param_value("format"));
+               return animation(req.body, opt.root, a);
+             });
+           }));
     });
     http.Post("/api/units", [this](const httplib::Request& req, httplib::Response& res) {
       send(res, guarded([&] { return units(req.body, opt.root); }));
@@ -103,6 +120,12 @@ struct Server::Impl {
     http.Get(R"(/api/render/(\d{1,9}))", [this](const httplib::Request& req, httplib::Response& res) {
       auto job = renders.job(std::stoi(req.matches[1].str()));
       send(res, job ? json_reply(status_json(*job)) : error_reply("no such render", 404));
+    });
+    http.Post(R"(/api/render/(\d{1,9})/cancel)", [this](const httplib::Request& req, httplib::Response& res) {
+      const int id = std::stoi(req.matches[1].str());
+      if (!renders.job(id)) return send(res, error_reply("no such render", 404));
+      if (!renders.cancel(id)) return send(res, error_reply("render " + std::to_string(id) + " is done already", 409));
+      send(res, json_reply({{"id", id}, {"cancelling", true}}));
     });
     http.Get(R"(/api/render/(\d{1,9})/picture\.png)", [this](const httplib::Request& req, httplib::Response& res) {
       picture(res, std::stoi(req.matches[1].str()));

@@ -1,5 +1,6 @@
 // sandpic studio's page: controls bound to scene keys, a debounced lattice
-// preview, flip, final DEM renders with progress, downloads, drag and drop.
+// preview, the fall played as an animation, flip, cell colours painted by
+// hand, final DEM renders with progress and cancel, downloads, drag and drop.
 'use strict';
 
 const App = {
@@ -7,11 +8,13 @@ const App = {
   picture: null,     // the last preview's PNG (Blob)
   timer: 0,
   seq: 0,            // previews answered out of order are dropped
+  fallSeq: 0,        // likewise animations: a newer one stops an older one playing
+  renderId: 0,       // the final render running, 0 if none
 
   async start() {
     this.scene = await (await api('GET', '/api/scene')).json();
     this.bind();
-    Sketch.init(document.getElementById('sketch'), (kind, line) => this.addStroke(kind, line));
+    Sketch.init(document.getElementById('sketch'), (kind, line) => this.addStroke(kind, line), (i) => this.paintCell(i));
     this.dropTarget();
     this.show();
     this.changed(0);
@@ -42,6 +45,16 @@ const App = {
       this.changed();
     });
     document.getElementById('show-units').addEventListener('change', () => Sketch.draw(this.scene));
+    for (const el of document.querySelectorAll('input[name=pen]'))
+      el.addEventListener('change', () => Sketch.draw(this.scene));
+    on('clear-cells', () => {
+      this.scene.init.cell_overrides = [];
+      this.show();
+      this.changed(0);
+    });
+    on('play-fall', () => this.playFall());
+    on('download-fall', () => this.downloadFall());
+    on('cancel-render', () => this.cancelRender());
     on('final-render', () => this.finalRender());
     on('download-picture', () => this.picture && this.download(this.picture, 'sandpic.png'));
     on('download-scene', () =>
@@ -59,11 +72,15 @@ const App = {
     const s = this.scene;
     document.getElementById('seeds').textContent =
       `seed ${s.seed}, layout ${s.layout_seed ?? s.seed}, physics ${s.physics_seed ?? s.seed}`;
+    const edits = (s.init.cell_overrides || []).length;
+    document.getElementById('cell-count').textContent = edits ? `${edits} cell(s) edited` : '';
     Sketch.draw(s);
   },
 
   reseed(key) {
     this.scene[key] = Math.floor(Math.random() * 2 ** 31);
+    // A new layout is new cells: the edits named the old ones by number.
+    if (key === 'layout_seed') this.scene.init.cell_overrides = [];
     this.show();
     this.changed(0);
   },
@@ -73,6 +90,23 @@ const App = {
     this.scene.segment.sketch[kind].push(line);
     this.scene.segment.method = 'sketch';  // a sketch drawn is a sketch used
     this.lastStroke = kind;
+    this.show();
+    this.changed(0);
+  },
+
+  // paper §3: the clicked cell takes the chosen dominant and secondary
+  // classes (Algorithm 1 then fills it with them as with drawn ones).
+  paintCell(i) {
+    const dominant = Number(document.getElementById('cell-dominant').value);
+    const secondary = Number(document.getElementById('cell-secondary').value);
+    if (dominant === secondary) {
+      this.showError(Object.assign(new Error('the dominant and secondary classes must differ'), { key: 'init.cell_overrides' }));
+      return;
+    }
+    const list = (this.scene.init.cell_overrides || []).filter((o) => o.cell !== i);
+    list.push({ cell: i, dominant, secondary });
+    list.sort((a, b) => a.cell - b.cell);
+    this.scene.init.cell_overrides = list;
     this.show();
     this.changed(0);
   },
@@ -109,8 +143,10 @@ const App = {
       document.getElementById('stats').textContent =
         `${stats.grains?.total ?? '?'} grains, ${stats.units ?? '?'} units, ` +
         `lattice ${(stats.timing?.total_s ?? 0).toFixed(2)} s, round trip ${((performance.now() - t0) / 1000).toFixed(2)} s`;
+      img.dataset.shown = String(seq);  // for tests: the preview of request `seq` is on screen
       this.status('');
       this.units();
+      if (document.getElementById('autoplay').checked) this.playFall();
     } catch (e) {
       if (e.status === 409 || seq !== this.seq) return;  // superseded by a newer preview
       this.showError(e);
@@ -122,7 +158,7 @@ const App = {
     try {
       Sketch.units = await (await api('POST', '/api/units', this.scene)).json();
     } catch (_) {
-      Sketch.units = { ellipses: [], cells: [] };
+      Sketch.units = { ellipses: [], cells: [], tessellation: [] };
     }
     Sketch.draw(this.scene);
   },
@@ -163,6 +199,64 @@ const App = {
     });
   },
 
+  // The lattice's fall (paper Fig. 14c-d) over the preview, once, then the
+  // preview again. The frames come as JPEGs back to back; all are decoded
+  // before the first is shown, so it plays at its pace.
+  async playFall() {
+    const seq = ++this.fallSeq;
+    const canvas = document.getElementById('fall');
+    const frames = document.getElementById('fall-frames').value;
+    this.status('rendering the fall...');
+    try {
+      const res = await api('POST', '/api/animation?frames=' + encodeURIComponent(frames), { ...this.scene, mode: 'lattice' });
+      const buf = await res.arrayBuffer();
+      const fps = Number(res.headers.get('X-Sandpic-Fps')) || 12;
+      let at = 0;
+      const urls = res.headers.get('X-Sandpic-Frame-Sizes').split(',').map((n) => {
+        const url = URL.createObjectURL(new Blob([buf.slice(at, at + Number(n))], { type: 'image/jpeg' }));
+        at += Number(n);
+        return url;
+      });
+      const images = await Promise.all(urls.map(async (url) => {
+        const im = new Image();
+        im.src = url;
+        await im.decode();
+        return im;
+      }));
+      urls.forEach((url) => URL.revokeObjectURL(url));
+      if (seq !== this.fallSeq) return;
+      this.status('');
+      canvas.width = images[0].naturalWidth;
+      canvas.height = images[0].naturalHeight;
+      canvas.hidden = false;
+      const ctx = canvas.getContext('2d');
+      for (const im of images) {
+        if (seq !== this.fallSeq) return;
+        ctx.drawImage(im, 0, 0);
+        await new Promise((r) => setTimeout(r, 1000 / fps));
+      }
+      canvas.hidden = true;
+      canvas.dataset.played = String(Number(canvas.dataset.played || 0) + 1);  // for tests
+    } catch (e) {
+      if (seq !== this.fallSeq) return;
+      canvas.hidden = true;
+      this.status('');
+      this.showError(e, 'frames');
+    }
+  },
+
+  async downloadFall() {
+    const frames = document.getElementById('fall-frames').value;
+    this.status('encoding the fall...');
+    try {
+      const res = await api('POST', `/api/animation?format=mp4&frames=${encodeURIComponent(frames)}`, { ...this.scene, mode: 'lattice' });
+      this.download(await res.blob(), `sandpic-fall-seed-${this.scene.seed}.mp4`);
+    } catch (e) {
+      this.showError(e, 'frames');
+    }
+    this.status('');
+  },
+
   async finalRender() {
     const scale = document.getElementById('render-scale').value;
     const bar = document.getElementById('render-progress');
@@ -173,9 +267,21 @@ const App = {
       bar.hidden = false;
       bar.value = 0;
       label.textContent = `render ${id} running`;
+      this.renderId = id;
+      document.getElementById('cancel-render').hidden = false;
       this.poll(id, bar, label);
     } catch (e) {
-      this.showError(e);
+      this.showError(e, 'mode');
+    }
+  },
+
+  async cancelRender() {
+    if (!this.renderId) return;
+    try {
+      await api('POST', `/api/render/${this.renderId}/cancel`);
+      document.getElementById('render-status').textContent = `render ${this.renderId} stopping...`;
+    } catch (e) {
+      this.showError(e, 'mode');
     }
   },
 
@@ -185,6 +291,12 @@ const App = {
     bar.value = st.fraction;
     if (!st.done) return setTimeout(() => this.poll(id, bar, label), 1000);
     bar.hidden = true;
+    this.renderId = 0;
+    document.getElementById('cancel-render').hidden = true;
+    if (st.cancelled) {
+      label.textContent = `render ${id} cancelled`;
+      return;
+    }
     if (st.error) {
       label.textContent = `render ${id} failed: ${st.error}`;
       return;
@@ -214,9 +326,11 @@ const App = {
 
   // Beside the control whose key the message names (or its section: a
   // sketch's "segment.sketch.ridges[0]" goes to the sketch's), else on top.
-  showError(e) {
+  // `fallback`: the slot for a message that names no scene key (a query
+  // parameter of the control's own request).
+  showError(e, fallback = '') {
     this.clearErrors();
-    const key = e.key || '';
+    const key = e.key || fallback;
     let slot = null;
     for (const el of document.querySelectorAll('[data-error-for]'))
       if (key && key.startsWith(el.dataset.errorFor) && (!slot || el.dataset.errorFor.length > slot.dataset.errorFor.length))

@@ -1,17 +1,20 @@
 // The sketch canvas over the preview (paper §5.2): ridge lines and arcs
 // drawn as polylines in window px, and the falling units the segmentation
-// makes of them drawn on top.
+// makes of them drawn on top. With the "paint cells" pen it shows the
+// tessellation's cells instead, and a click picks one (paper §3).
 'use strict';
 
 const Sketch = {
   canvas: null,
-  units: { ellipses: [], cells: [] },
+  units: { ellipses: [], cells: [], tessellation: [] },
   stroke: null,  // the polyline being drawn
   onStroke: null,  // (kind, polyline) when a stroke ends
+  onCell: null,  // (cell index) when a cell is clicked with the cells pen
 
-  init(canvas, onStroke) {
+  init(canvas, onStroke, onCell) {
     this.canvas = canvas;
     this.onStroke = onStroke;
+    this.onCell = onCell;
     canvas.addEventListener('pointerdown', (e) => this.down(e));
     canvas.addEventListener('pointermove', (e) => this.move(e));
     canvas.addEventListener('pointerup', () => this.up());
@@ -27,8 +30,18 @@ const Sketch = {
             Math.round((e.clientY - r.top) * this.canvas.height / r.height)];
   },
 
+  // The index of the tessellation cell at window px p, or -1.
+  cellAt([x, y]) {
+    return (this.units.tessellation || []).findIndex(([x0, y0, x1, y1]) => x >= x0 && x < x1 && y >= y0 && y < y1);
+  },
+
   down(e) {
     if (this.pen() === 'off') return;
+    if (this.pen() === 'cells') {
+      const i = this.cellAt(this.point(e));
+      if (i >= 0) this.onCell(i);
+      return;
+    }
     this.canvas.setPointerCapture(e.pointerId);
     this.stroke = [this.point(e)];
   },
@@ -64,11 +77,37 @@ const Sketch = {
     ctx.setLineDash([6, 4]);
     ctx.strokeRect(0.5, 0.5, c.width - 1, scene.region.height);
     ctx.setLineDash([]);
-    if (document.getElementById('show-units').checked) this.drawUnits(ctx);
+    if (this.pen() === 'cells') this.drawCells(ctx, scene);
+    else if (document.getElementById('show-units').checked) this.drawUnits(ctx);
     const sk = scene.segment.sketch;
     for (const r of sk.ridges) this.line(ctx, r, Scene.hex(sk.ridge_color));
     for (const a of sk.arcs) this.line(ctx, a, Scene.hex(sk.arc_color));
     if (this.stroke) this.line(ctx, this.stroke, this.pen() === 'arcs' ? Scene.hex(sk.arc_color) : Scene.hex(sk.ridge_color));
+  },
+
+  // Every cell filled with its dominant class's colour (the region as it
+  // is before the fall: the picture shows it emptied), the ones edited by
+  // hand outlined in red and marked with their classes.
+  drawCells(ctx, scene) {
+    const edited = new Map((scene.init.cell_overrides || []).map((o) => [o.cell, o]));
+    const colors = scene.grains.colors.map((c) => Scene.hex(c));
+    ctx.font = '11px system-ui, sans-serif';
+    (this.units.tessellation || []).forEach(([x0, y0, x1, y1, dom], i) => {
+      ctx.globalAlpha = 0.6;
+      ctx.fillStyle = colors[dom - 1];
+      ctx.fillRect(x0, y0, x1 - x0, y1 - y0);
+      ctx.globalAlpha = 1;
+      const o = edited.get(i);
+      ctx.strokeStyle = o ? 'rgba(220,30,30,0.95)' : 'rgba(0,0,0,0.35)';
+      ctx.lineWidth = o ? 2.5 : 1;
+      ctx.strokeRect(x0 + 0.5, y0 + 0.5, x1 - x0 - 1, y1 - y0 - 1);
+      if (o && x1 - x0 > 30 && y1 - y0 > 14) {
+        ctx.fillStyle = 'rgba(255,255,255,0.85)';
+        ctx.fillRect(x0 + 2, y0 + 2, 38, 13);
+        ctx.fillStyle = '#000';
+        ctx.fillText(`S${o.dominant}/S${o.secondary}`, x0 + 4, y0 + 12);
+      }
+    });
   },
 
   drawUnits(ctx) {

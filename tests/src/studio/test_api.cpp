@@ -120,5 +120,48 @@ TEST(StudioApi, ACompleteSceneHasEveryKey) {
   EXPECT_EQ(s["window"]["width"], 1000);
 }
 
+// paper §3: the page paints cells by their number; the units list the
+// scene's own cells in that numbering, with the classes an edit gave them.
+TEST(StudioApi, UnitsListTheCellsWithTheirClasses) {
+  const std::string root = test::studio_folder("cells");
+  const json plain = json::parse(units("{}", root).body);
+  ASSERT_GT(plain["tessellation"].size(), 10u);
+  for (const auto& c : plain["tessellation"]) {
+    ASSERT_EQ(c.size(), 6u);
+    EXPECT_LT(c[0].get<int>(), c[2].get<int>());
+    EXPECT_LT(c[1].get<int>(), c[3].get<int>());
+    EXPECT_NE(c[4], c[5]);  // dominant and secondary differ (Algorithm 1, line 4)
+  }
+  const json edited = json::parse(
+      units(R"({"init": {"cell_overrides": [{"cell": 3, "dominant": 4, "secondary": 1}]}})", root).body);
+  EXPECT_EQ(edited["tessellation"][3][4], 4);
+  EXPECT_EQ(edited["tessellation"][3][5], 1);
+  EXPECT_EQ(edited["tessellation"][2], plain["tessellation"][2]);  // the others are as drawn
+  // The edit reaches the picture: the preview changes.
+  EXPECT_NE(preview(R"({"init": {"cell_overrides": [{"cell": 3, "dominant": 4, "secondary": 1}]}})", root, 0.5).body,
+            preview("{}", root, 0.5).body);
+  // A cell past the tessellation's is named as the key.
+  const Reply bad = reply_of([&] { return units(R"({"init": {"cell_overrides": [{"cell": 99999, "dominant": 1, "secondary": 2}]}})", root); });
+  EXPECT_EQ(bad.status, 400);
+  EXPECT_EQ(json::parse(bad.body)["key"], "init.cell_overrides");
+}
+
+TEST(StudioApi, OnlyLoopbackHostsAndTheStudiosOwnPage) {
+  EXPECT_EQ(refusal("127.0.0.1", "GET", "127.0.0.1:8080", ""), "");
+  EXPECT_EQ(refusal("127.0.0.1", "GET", "localhost:8080", ""), "");
+  EXPECT_EQ(refusal("127.0.0.1", "GET", "[::1]:8080", ""), "");
+  EXPECT_EQ(refusal("127.0.0.1", "GET", "", ""), "");  // HTTP/1.0: no Host, no browser
+  // DNS rebinding: a name of another site resolved to 127.0.0.1.
+  EXPECT_NE(refusal("127.0.0.1", "GET", "evil.example:8080", ""), "");
+  EXPECT_NE(refusal("localhost", "GET", "127.0.0.1.evil.example", ""), "");
+  // A page of another site posting to the studio.
+  EXPECT_NE(refusal("127.0.0.1", "POST", "127.0.0.1:8080", "http://evil.example"), "");
+  EXPECT_NE(refusal("127.0.0.1", "POST", "127.0.0.1:8080", "null"), "");
+  EXPECT_EQ(refusal("127.0.0.1", "POST", "127.0.0.1:8080", "http://127.0.0.1:8080"), "");
+  EXPECT_EQ(refusal("127.0.0.1", "GET", "127.0.0.1:8080", "http://evil.example"), "");  // a GET changes nothing
+  // Told to listen elsewhere (--host): the designer chose to be reachable.
+  EXPECT_EQ(refusal("0.0.0.0", "POST", "studio.lan:8080", "http://studio.lan:8080"), "");
+}
+
 }  // namespace
 }  // namespace sandpic::studio

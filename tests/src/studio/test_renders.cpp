@@ -73,5 +73,41 @@ TEST(StudioRenders, TheDemModeNeedsBullet) {
 #endif
 }
 
+// The page's cancel button: the render stops within a step cycle, says so,
+// writes nothing, and the next one may start.
+TEST(StudioRenders, ACancelledRenderStopsAndWritesNothing) {
+  const std::string dir = test::studio_folder("cancel") + "/r";
+  Renders renders(dir);
+  EXPECT_FALSE(renders.cancel(1));  // no such render
+#if SANDPIC_WITH_BULLET
+  const Scene s = scaled(scene_from_request(R"({"mode": "dem"})", "."), 0.3);  // half an hour if left to run
+#else
+  const Scene s = scene_from_request("{}", ".");
+#endif
+  const int id = renders.start(s);
+#if SANDPIC_WITH_BULLET
+  // Well into the fall, so the stop comes from inside the step loop.
+  for (int i = 0; i < 3000 && renders.job(id)->fraction == 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_GT(renders.job(id)->fraction, 0);
+#endif
+  const bool stopping = renders.cancel(id);
+  auto job = wait_done(renders, id);
+  ASSERT_TRUE(job);
+#if SANDPIC_WITH_BULLET
+  ASSERT_TRUE(stopping);
+#endif
+  if (stopping && job->cancelled) {  // the lattice may have finished first
+    EXPECT_EQ(job->error, "cancelled");
+    EXPECT_EQ(job->picture, "");
+    EXPECT_EQ(status_json(*job)["cancelled"], true);
+    EXPECT_TRUE(std::filesystem::is_empty(dir));
+  }
+  EXPECT_FALSE(renders.cancel(id));  // done already
+  auto next = wait_done(renders, renders.start(scaled(scene_from_request("{}", "."), 0.2)));
+  ASSERT_TRUE(next);
+  EXPECT_EQ(next->error, "");
+  EXPECT_FALSE(next->cancelled);
+}
+
 }  // namespace
 }  // namespace sandpic::studio

@@ -89,5 +89,30 @@ TEST(StudioServer, AFinalRenderReportsItsProgressAndPicture) {
   EXPECT_EQ(pic->get_header_value("Content-Type"), "image/png");
 }
 
+TEST(StudioServer, TheFallCancelAndForeignRequests) {
+  Running s(options("more"));
+  httplib::Client c("127.0.0.1", s.port);
+  auto fall = c.Post("/api/animation?scale=0.1&frames=3", "{}", "application/json");
+  ASSERT_TRUE(fall);
+  ASSERT_EQ(fall->status, 200) << fall->body;
+  EXPECT_TRUE(fall->has_header("X-Sandpic-Frame-Sizes"));
+  auto bad = c.Post("/api/animation?frames=0", "{}", "application/json");
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->status, 400);
+  auto none = c.Post("/api/render/77/cancel", "", "application/json");
+  ASSERT_TRUE(none);
+  EXPECT_EQ(none->status, 404);
+  // DNS rebinding and other sites' pages.
+  auto rebound = c.Get("/api/scene", {{"Host", "evil.example:" + std::to_string(s.port)}});
+  ASSERT_TRUE(rebound);
+  EXPECT_EQ(rebound->status, 403);
+  auto posted = c.Post("/api/render", {{"Origin", "http://evil.example"}}, "{}", "application/json");
+  ASSERT_TRUE(posted);
+  EXPECT_EQ(posted->status, 403);
+  auto own = c.Post("/api/units", {{"Origin", "http://127.0.0.1:" + std::to_string(s.port)}}, "{}", "application/json");
+  ASSERT_TRUE(own);
+  EXPECT_EQ(own->status, 200);
+}
+
 }  // namespace
 }  // namespace sandpic::studio
