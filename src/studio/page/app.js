@@ -105,6 +105,8 @@ const App = {
       const img = document.getElementById('preview');
       URL.revokeObjectURL(img.src);
       img.src = URL.createObjectURL(blob);
+      // Tests and the benchmark wait on this: the preview numbered seq is decoded, on screen.
+      img.decode().then(() => { img.dataset.seq = seq; }, () => {});
       const stats = JSON.parse(res.headers.get('X-Sandpic-Stats') || '{}');
       document.getElementById('stats').textContent =
         `${stats.grains?.total ?? '?'} grains, ${stats.units ?? '?'} units, ` +
