@@ -76,7 +76,7 @@ async function main() {
 
     // 2. C1 changes: the scene's first colour and the picture.
     const c1 = page.locator('input[type=color][data-color="0"]');
-    const newColour = (await c1.inputValue()) === '#ff00ff' ? '#00ffff' : '#ff00ff';
+    const newColour = (await c1.inputValue()) === '#2f5d8a' ? '#8a2f5d' : '#2f5d8a';
     await c1.fill(newColour);
     seq = await waitForPreview(page, seq);
     const afterColour = await shown();
