@@ -42,7 +42,7 @@ const App = {
     on('clear-sketch', () => {
       this.scene.segment.sketch.ridges = [];
       this.scene.segment.sketch.arcs = [];
-      this.changed();
+      this.sketchRemoved();
     });
     document.getElementById('show-units').addEventListener('change', () => Sketch.draw(this.scene));
     for (const el of document.querySelectorAll('input[name=pen]'))
@@ -72,6 +72,10 @@ const App = {
     const s = this.scene;
     document.getElementById('seeds').textContent =
       `seed ${s.seed}, layout ${s.layout_seed ?? s.seed}, physics ${s.physics_seed ?? s.seed}`;
+    const sk = s.segment.sketch, half = s.segment.method !== 'sketch' && (sk.ridges.length || sk.arcs.length);
+    document.getElementById('sketch-hint').textContent = !half ? '' : sk.ridges.length
+      ? 'now draw arc-like curves across the ridge line (pen: arc): the sketch is used once it has both'
+      : 'now draw a ridge line for the arcs to cross (pen: ridge line): the sketch is used once it has both';
     const edits = (s.init.cell_overrides || []).length;
     document.getElementById('cell-count').textContent = edits ? `${edits} cell(s) edited` : '';
     Sketch.draw(s);
@@ -85,11 +89,29 @@ const App = {
     this.changed(0);
   },
 
+  // paper §5.2: a sketch is ridge lines with arc-like curves across them;
+  // half of one cannot segment. It is used (segment.method = sketch) once
+  // it has both, and until then the page says what is missing and keeps
+  // the picture of the method before.
   addStroke(kind, line) {
     if (kind !== 'ridges' && kind !== 'arcs') return;
-    this.scene.segment.sketch[kind].push(line);
-    this.scene.segment.method = 'sketch';  // a sketch drawn is a sketch used
+    const seg = this.scene.segment;
+    seg.sketch[kind].push(line);
     this.lastStroke = kind;
+    if (seg.method !== 'sketch' && seg.sketch.ridges.length && seg.sketch.arcs.length) {
+      this.methodBefore = seg.method;
+      seg.method = 'sketch';
+    }
+    this.show();
+    if (seg.method === 'sketch') this.changed(0);
+  },
+
+  // After a stroke is taken away: a sketch left without ridges or arcs
+  // (and no sketch picture) goes back to the method before it.
+  sketchRemoved() {
+    const seg = this.scene.segment;
+    if (seg.method === 'sketch' && !seg.sketch.image && !(seg.sketch.ridges.length && seg.sketch.arcs.length))
+      seg.method = this.methodBefore || 'ellipses';
     this.show();
     this.changed(0);
   },
@@ -116,7 +138,7 @@ const App = {
     if (kind && sk[kind].length) sk[kind].pop();
     else if (sk.arcs.length) sk.arcs.pop();
     else sk.ridges.pop();
-    this.changed(0);
+    this.sketchRemoved();
   },
 
   // A preview 150 ms after the last change: typing a number makes one request.
@@ -139,11 +161,12 @@ const App = {
       const img = document.getElementById('preview');
       URL.revokeObjectURL(img.src);
       img.src = URL.createObjectURL(blob);
+      // Tests and the benchmark wait on this: the preview numbered seq is decoded, on screen.
+      img.decode().then(() => { img.dataset.seq = seq; }, () => {});
       const stats = JSON.parse(res.headers.get('X-Sandpic-Stats') || '{}');
       document.getElementById('stats').textContent =
         `${stats.grains?.total ?? '?'} grains, ${stats.units ?? '?'} units, ` +
         `lattice ${(stats.timing?.total_s ?? 0).toFixed(2)} s, round trip ${((performance.now() - t0) / 1000).toFixed(2)} s`;
-      img.dataset.shown = String(seq);  // for tests: the preview of request `seq` is on screen
       this.status('');
       this.units();
       if (document.getElementById('autoplay').checked) this.playFall();
