@@ -37,6 +37,35 @@ bool HeightField::unstable(int c, int dir, const SlopeRule& rule) const {
   return any;
 }
 
+bool HeightField::too_steep(int c, int dir, double t, int window) const {
+  const double* p = h_.data() + kPad + c;
+  const double top = *p;
+  bool any = false;
+  for (int k = 1; k <= window; ++k) any |= top - p[dir * k] > k * t;
+  return any;
+}
+
+// The slide from c toward dir: to the next column a grain may rest on, unless
+// it is caught on the way (a chance per column passed) where the flank is no
+// steeper than the trap slope.
+int HeightField::slide(const Slopes& s, int c, int dir, uint64_t seed, uint64_t id, int& draws, bool& caught) const {
+  const int stop = next_resting(s, c, dir);
+  const double q = s.rule.trap_rate;
+  if (!(q > 0) || stop == c) return stop;
+  const double log_miss = std::log1p(-std::min(q, 0.999999));
+  for (int at = c;;) {
+    const double u = uniform(seed, Stream::LatticeTrap, id, uint64_t(draws++));
+    const double n = 1 + std::floor(std::log1p(-u) / log_miss);
+    if (n >= std::abs(stop - at)) return stop;
+    at += dir * int(n);
+    if (!too_steep(at, dir, s.rule.trap_drop_per_column, s.rule.window) &&
+        !too_steep(at, -dir, s.rule.trap_drop_per_column, s.rule.window)) {
+      caught = true;
+      return at;
+    }
+  }
+}
+
 // How much the steepest look-ahead slope exceeds the rule's, per column.
 double HeightField::excess(int c, int dir, const SlopeRule& rule) const {
   double worst = -INFINITY;
@@ -74,8 +103,15 @@ int HeightField::settle(int c, int r, uint64_t seed, uint64_t id) const {
   }
   // A grain slides on in its direction while that side is too steep, then
   // keeps going downhill for its run-out; in a pit it may turn.
+  int draws = 0;
   for (int turns = 0;;) {
-    c = next_resting(s, c, dir);
+    if (s.rule.trap_rate > 0) {
+      bool caught = false;
+      c = slide(s, c, dir, seed, id, draws, caught);
+      if (caught) return c;  // caught on the flank: no run-out
+    } else {
+      c = next_resting(s, c, dir);
+    }
     for (int coast = s.rule.runout; coast > 0 && height(c + dir) < height(c) && !steep(s, c, -dir); --coast)
       c += dir;
     if (steep(s, c, dir)) continue;

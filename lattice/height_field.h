@@ -18,6 +18,8 @@ struct SlopeRule {
   double drop_per_column = 0;  // tan(angle of repose) · column width
   int window = 1;              // columns looked ahead
   int runout = 0;              // columns it keeps going down once stable
+  double trap_rate = 0;        // chance per column slid of being caught on the flank
+  double trap_drop_per_column = 0;  // steepest slope a caught grain may rest on
   bool operator==(const SlopeRule&) const = default;
 };
 
@@ -62,6 +64,8 @@ class HeightField {
     std::vector<uint64_t> steep[2];
   };
   bool unstable(int c, int dir, const SlopeRule& rule) const;
+  bool too_steep(int c, int dir, double drop_per_column, int window) const;
+  int slide(const Slopes& s, int c, int dir, uint64_t seed, uint64_t id, int& draws, bool& caught) const;
   double excess(int c, int dir, const SlopeRule& rule) const;
   bool steep(const Slopes& s, int c, int dir) const;
   int next_resting(const Slopes& s, int c, int dir) const;

@@ -35,6 +35,11 @@ SlopeRule slope_rule(const Scene& s, int k) {
   SlopeRule r = make_slope_rule(repose_angle_deg(s, k), lattice_area_px(s, k) / column_px, column_px,
                                 s.lattice.runout_px[k]);
   if (s.lattice.window_columns > 0) r.window = s.lattice.window_columns;
+  if (s.lattice.trap_rate > 0) {
+    r.trap_rate = s.lattice.trap_rate;
+    r.trap_drop_per_column =
+        std::tan(std::min(89.0, repose_angle_deg(s, k) + s.lattice.trap_deg) * std::numbers::pi / 180) * column_px;
+  }
   return r;
 }
 

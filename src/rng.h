@@ -19,6 +19,7 @@ enum class Stream : uint64_t {
   Figure,            // paper §10: C1 or C2 for sand on a figure, per pixel
   Pattern,           // paper §10, Fig. 18: a row's unit of two ellipses
   Area,              // paper §10, Fig. 17: an area's own layout seed
+  LatticeTrap,       // lattice: where a sliding grain is caught on a flank (physics seed)
 };
 
 inline uint64_t mix64(uint64_t z) {  // splitmix64 finaliser

@@ -150,6 +150,12 @@ struct Scene {
     // at every size: the lattice's top 10 px are drawn this much thicker
     // (calibrate fits it with bulk from two pile sizes).
     double surface_px = 0;
+    // Bouchaud et al. [24] (paper §8): a rolling grain may be caught by the
+    // static surface on its way down: per column slid, with this chance, it
+    // stops where the flank is at most trap_deg steeper than its angle of
+    // repose (0: grains only stop where the slope is below the angle).
+    double trap_rate = 0;
+    double trap_deg = 3;
     std::string calibration;  // `sandpic calibrate` output whose "lattice" values replace these
     // paper §7 + the water: grains land in the order they reach the pile, at
     // dem.release_rate and their class's settling speed, as in the DEM.

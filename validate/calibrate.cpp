@@ -53,6 +53,7 @@ std::vector<std::vector<int>> physics_groups(const Scene& s) {
 struct Params {
   std::vector<double> angle, runout;  // per group
   double bulk = 1, surface = 0;
+  double trap_rate = 0, trap_deg = 3;
 };
 
 class Fit {
@@ -91,6 +92,8 @@ class Fit {
     s.lattice.repose_deg = deg;
     s.lattice.bulk = p.bulk;
     s.lattice.surface_px = p.surface;
+    s.lattice.trap_rate = p.trap_rate;
+    s.lattice.trap_deg = p.trap_deg;
   }
 
  private:
@@ -299,6 +302,8 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   }
   p.bulk = base.lattice.bulk;
   p.surface = base.lattice.surface_px;
+  p.trap_rate = base.lattice.trap_rate;
+  p.trap_deg = base.lattice.trap_deg;
   c.error_before = fit.error(p);
   // Two pile sizes at least (their heights a quarter apart) tell the
   // surface layer from the bulk.
@@ -309,11 +314,34 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
       std::to_string(c.noise_floor) + ")");
   // Bulk first (it sets the mean height), then shape: angles, run-out, and
   // the angles again on the new run-out.
-  for (int round = 0; round < 2; ++round) {
-    p = fit_bulk(fit, targets, p, sizes);
-    p = fit_angles(fit, p);
-    p = fit_runout(fit, p);
-    log("round " + std::to_string(round + 1) + ": silhouette error " + std::to_string(fit.error(p)));
+  auto fit_all = [&](Params q) {
+    for (int round = 0; round < 2; ++round) {
+      q = fit_bulk(fit, targets, q, sizes);
+      q = fit_angles(fit, q);
+      q = fit_runout(fit, q);
+      log("round " + std::to_string(round + 1) + ": silhouette error " + std::to_string(fit.error(q)));
+    }
+    return q;
+  };
+  if (!opt.trap) {
+    p = fit_all(p);
+  } else {
+    // Trapping moves the angle the flanks end at, so the angles are refitted
+    // for every candidate: the scene's own value, none, and a small grid.
+    std::vector<std::pair<double, double>> grid = {{p.trap_rate, p.trap_deg}, {0, 3}};
+    for (double rate : {0.2, 1.0})
+      for (double deg : {3.0, 5.0}) grid.emplace_back(rate, deg);
+    Params best;
+    double best_e = INFINITY;
+    for (auto [rate, deg] : grid) {
+      Params q = p;
+      q.trap_rate = rate, q.trap_deg = deg;
+      log("trap_rate " + std::to_string(rate) + ", trap_deg " + std::to_string(deg) + ":");
+      q = fit_all(q);
+      const double e = fit.error(q);
+      if (e < best_e) best_e = e, best = q;
+    }
+    p = best;
   }
   c.error_after = fit.error(p);
   Scene applied = base;
@@ -322,6 +350,8 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   c.runout_px = applied.lattice.runout_px;
   c.bulk = p.bulk;
   c.surface_px = p.surface;
+  c.trap_rate = p.trap_rate;
+  c.trap_deg = p.trap_deg;
   c.lattice_runs = fit.runs();
   return c;
 }
@@ -333,6 +363,8 @@ ordered_json calibration_json(const Scene& base, const Calibration& c) {
   j["lattice"]["runout_px"] = c.runout_px;
   j["lattice"]["bulk"] = c.bulk;
   j["lattice"]["surface_px"] = c.surface_px;
+  j["lattice"]["trap_rate"] = c.trap_rate;
+  j["lattice"]["trap_deg"] = c.trap_deg;
   ordered_json& f = j["fit"];
   f["physics"] = {{"friction", base.physics.friction},
                   {"restitution", base.physics.restitution},

@@ -24,6 +24,9 @@ struct CalibrateOptions {
   int scenes = 3;                         // variants of the scene (layout seed and tessellation)
   std::vector<uint64_t> physics_seeds = {1, 2};  // DEM runs per variant
   std::string runs_dir;                   // DEM piles kept here and reused while their digest holds ("": none)
+  // Also fit lattice.trap_rate and trap_deg (rolling grains caught on the
+  // flanks): the whole fit once per candidate on a small grid, the best kept.
+  bool trap = false;
 };
 
 // The scenes the fit runs on: the scene's physics (friction, restitution,
@@ -34,6 +37,7 @@ std::vector<Scene> calibration_scenes(const Scene& base, const CalibrateOptions&
 struct Calibration {
   std::array<double, kClasses> repose_deg{}, runout_px{};
   double bulk = 1, surface_px = 0;
+  double trap_rate = 0, trap_deg = 3;
   std::vector<std::vector<int>> groups;  // classes the DEM cannot tell apart share their values
   double error_before = 0, error_after = 0;  // mean silhouette error, lattice vs each DEM run
   double noise_floor = 0;                    // mean silhouette error between DEM seeds of one scene

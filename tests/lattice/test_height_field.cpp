@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -37,6 +38,45 @@ TEST(HeightField, PileSlopeFollowsTheAngleOfRepose) {
     // little upward (measured: 5°→5.0, 15°→16.5, 30°→30.6, 45°→49.6, 60°→60.5).
     EXPECT_NEAR(got, deg, 5) << "rule " << deg << "°";
   }
+}
+
+// Bouchaud et al. [24] (paper §8): a rolling grain may be caught by the
+// static surface on its way down. Caught grains rest on flanks up to
+// trap_deg steeper than the angle of repose (lattice.trap_rate, trap_deg), so
+// a pile's flanks end between the two angles; every grain stays accounted for.
+TEST(HeightField, CaughtGrainsSteepenTheFlanks) {
+  auto pile = [](double rate) {
+    SlopeRule r = rule_for(30);
+    r.trap_rate = rate;
+    r.trap_drop_per_column = std::tan(38 * std::numbers::pi / 180);
+    const int columns = 600;
+    HeightField f(columns, 1.0, 1e9, {r});
+    double area = 0;
+    for (int i = 0; i < 30000; ++i) {
+      int c = columns / 2 + int(uniform(7, Stream::OutletJitter, uint64_t(i)) * 6) - 3;
+      f.deposit(f.settle(c, 0, 7, uint64_t(i)), 0, kBigGrainArea);
+      area += kBigGrainArea;
+    }
+    std::vector<double> h(static_cast<size_t>(columns));
+    double sum = 0;
+    for (int c = 0; c < columns; ++c) sum += h[size_t(c)] = f.height(c);
+    EXPECT_NEAR(sum, area, 1e-6);  // every grain is in the pile
+    // Mean slope (degrees) where the pile is between lo and hi of its top height.
+    const double top = *std::max_element(h.begin(), h.end());
+    auto slope = [&](double lo, double hi) {
+      double s = 0;
+      int n = 0;
+      for (int c = 1; c + 1 < columns; ++c)
+        if (h[size_t(c)] > lo * top && h[size_t(c)] < hi * top)
+          s += std::atan(std::abs(h[size_t(c + 1)] - h[size_t(c - 1)]) / 2) * 180 / std::numbers::pi, ++n;
+      return s / std::max(n, 1);
+    };
+    return slope(0.2, 0.8);
+  };
+  const double free = pile(0), caught = pile(1);  // measured: 30.6° and 36.9°
+  EXPECT_NEAR(free, 30, 2);
+  EXPECT_GT(caught, free + 3);  // the flanks steepen toward the trap slope (38°)
+  EXPECT_LT(caught, 38 + 2);    // and no further
 }
 
 TEST(HeightField, WallsHoldTheSandAndAreaIsConserved) {
