@@ -94,7 +94,8 @@ Reply animation(const std::string& body, const std::string& root, const Animatio
   for (const cv::Mat& f : frames) {
     cv::imencode(".jpg", f, buf, {cv::IMWRITE_JPEG_QUALITY, 85});
     r.body.append(reinterpret_cast<const char*>(buf.data()), buf.size());
-    sizes += (sizes.empty() ? "" : ",") + std::to_string(buf.size());
+    if (!sizes.empty()) sizes += ',';
+    sizes += std::to_string(buf.size());
   }
   r.content_type = "application/octet-stream";
   r.headers["X-Sandpic-Frame-Sizes"] = sizes;
