@@ -2,7 +2,10 @@
 
 #include <filesystem>
 
+#include <opencv2/imgcodecs.hpp>
+
 #include "src/init/init.h"
+#include "src/output.h"
 #include "src/pipeline.h"
 #include "src/segment/segment.h"
 
@@ -82,7 +85,7 @@ std::string refusal(const std::string& listen_host, const std::string& method, c
 
 Scene scene_from_request(const std::string& body, const std::string& root) {
   if (body.size() > kMaxRequestBytes)
-    throw InputError("request of " + std::to_string(body.size()) + " bytes is over the limit of " +
+    throw TooLarge("request of " + std::to_string(body.size()) + " bytes is over the limit of " +
                      std::to_string(kMaxRequestBytes));
   Scene s = scene_from_text(body, "request", root);
   validate(s);
@@ -109,6 +112,32 @@ Scene scaled(Scene s, double scale) {
   apply_scale(s, scale);
   validate(s);
   return s;
+}
+
+Reply upload_image(const std::string& bytes, const std::string& root) {
+  if (bytes.size() > kMaxImageBytes)
+    throw TooLarge("image of " + std::to_string(bytes.size()) + " bytes is over the limit of " +
+                   std::to_string(kMaxImageBytes));
+  cv::Mat img;
+  try {
+    img = cv::imdecode(cv::Mat(1, int(bytes.size()), CV_8U, const_cast<char*>(bytes.data())), cv::IMREAD_COLOR);
+  } catch (const cv::Exception&) {
+  }
+  if (img.empty()) throw InputError("image: not a picture OpenCV can read (PNG, JPEG, BMP, TIFF, WebP, ...)");
+  if (double(img.total()) > kMaxImagePixels)
+    throw InputError("image: " + std::to_string(img.cols) + " x " + std::to_string(img.rows) +
+                     " px is over the limit of 50 megapixels; the region is a few hundred px high");
+  std::vector<uchar> png;
+  cv::imencode(".png", img, png);
+  // FNV-1a of the picture: its name, so a picture dropped again is the same file.
+  uint64_t h = 1469598103934665603ull;
+  for (uchar b : png) h = (h ^ b) * 1099511628211ull;
+  char name[48];
+  std::snprintf(name, sizeof name, "image-%016llx.png", (unsigned long long)h);
+  const std::string rel = std::string("studio-inputs/") + name;
+  check_folder((fs::path(root) / "studio-inputs").string());
+  write_atomic((fs::path(root) / rel).string(), std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+  return json_reply({{"path", rel}, {"width", img.cols}, {"height", img.rows}});
 }
 
 Reply scene_reply(const Scene& s) { return json_reply(to_json(s)); }

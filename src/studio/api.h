@@ -14,6 +14,14 @@ namespace sandpic::studio {
 // A request body past this is refused before it is parsed: a scene is a few
 // kB, a sketch with long strokes some hundred kB.
 constexpr size_t kMaxRequestBytes = 1 << 20;
+// A picture dropped on the page for halftoning (paper §4.2): a photo's size.
+constexpr size_t kMaxImageBytes = 16 << 20;
+constexpr double kMaxImagePixels = 50e6;
+
+// A request body over its limit: 413, not 400.
+struct TooLarge : InputError {
+  using InputError::InputError;
+};
 
 struct Reply {
   int status = 200;
@@ -49,6 +57,14 @@ void check_inside(const std::string& root, const std::string& path, const std::s
 // (--host) checks neither. "" when the request may go on, else why not.
 std::string refusal(const std::string& listen_host, const std::string& method, const std::string& host_header,
                     const std::string& origin);
+
+// POST /api/image: a picture for halftoning, its bytes as the body. It is
+// decoded (InputError if it is no picture OpenCV reads, or over
+// kMaxImagePixels), kept as PNG under root/studio-inputs/ named by its
+// content (the same picture twice is one file), and answered with
+// {"path": "studio-inputs/image-HASH.png", "width", "height"}: the path a
+// scene's init.image takes.
+Reply upload_image(const std::string& bytes, const std::string& root);
 
 // The scene the page starts from, as JSON (every key).
 Reply scene_reply(const Scene& s);

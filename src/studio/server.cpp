@@ -24,6 +24,8 @@ Reply guarded(const std::function<Reply()>& f) {
     return f();
   } catch (const Busy& e) {
     return error_reply(e.what(), 409);
+  } catch (const TooLarge& e) {
+    return error_reply(e.what(), 413);
   } catch (const InputError& e) {
     return error_reply(e.what());
   } catch (const nlohmann::json::exception& e) {  // a value no key check caught
@@ -81,7 +83,8 @@ struct Server::Impl {
   }
 
   void routes() {
-    http.set_payload_max_length(kMaxRequestBytes);
+    // The largest body any route takes (a picture); each route checks its own.
+    http.set_payload_max_length(kMaxImageBytes);
     http.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
       const std::string why = refusal(opt.host, req.method, req.get_header_value("Host"), req.get_header_value("Origin"));
       if (why.empty()) return httplib::Server::HandlerResponse::Unhandled;
@@ -104,6 +107,9 @@ struct Server::Impl {
                return animation(req.body, opt.root, a);
              });
            }));
+    });
+    http.Post("/api/image", [this](const httplib::Request& req, httplib::Response& res) {
+      send(res, guarded([&] { return upload_image(req.body, opt.root); }));
     });
     http.Post("/api/units", [this](const httplib::Request& req, httplib::Response& res) {
       send(res, guarded([&] { return units(req.body, opt.root); }));

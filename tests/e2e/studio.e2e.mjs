@@ -255,7 +255,36 @@ async function main() {
     assert.deepEqual(sceneFile.init.cell_overrides, overrides, 'and the cell painted');
     log('downloads: picture.png (the preview shown), scene.json (the ridge, C1, the physics seed)');
 
-    // 9. A final render cancelled: it stops, says so, and keeps nothing.
+    // 9. Drag and drop: a picture dropped on the page is halftoned into the
+    // region (paper §4.2); the scene file downloaded, dropped back, gives
+    // back the same picture (same scene, same seed, same bytes).
+    const drop = (name, type, buf) => page.evaluate(({ name, type, data }) => {
+      const bytes = Uint8Array.from(atob(data), (c) => c.charCodeAt(0));
+      const dt = new DataTransfer();
+      dt.items.add(new File([bytes], name, { type }));
+      document.body.dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+    }, { name, type, data: buf.toString('base64') });
+    let from = seq;
+    await drop('sunset.png', 'image/png', fs.readFileSync(path.join(ROOT, 'examples/inputs/fig15-sunset.png')));
+    seq = await waitForPreview(page, from);
+    const init = await page.evaluate(() => App.scene.init);
+    assert.equal(init.method, 'halftone', 'a picture dropped: the region is its halftone');
+    assert.match(init.image, /^studio-inputs\/image-[0-9a-f]{16}\.png$/);
+    assert.ok(fs.existsSync(path.join(ART, 'studio-folder', init.image)), 'kept in the studio folder');
+    assert.equal(await page.inputValue('[data-key="init.method"]'), 'halftone');
+    assert.match(await page.textContent('#image-name'), /sunset\.png \(\d+ x \d+\)/);
+    const afterPicture = await shown();
+    assert.notEqual(hash(afterPicture), hash(afterCell), 'the halftoned picture falls');
+    log(`picture dropped: ${init.image}, preview ${hash(afterPicture)}`);
+    await shot('picture-dropped');
+    from = seq;
+    await drop('scene.json', 'application/json', fs.readFileSync(path.join(ART, 'scene.json')));
+    seq = await waitForPreview(page, from);
+    assert.equal(await page.evaluate(() => App.scene.init.method), 'tessellation');
+    assert.ok((await shown()).equals(afterCell), 'the scene file dropped back: the same picture, byte for byte');
+    log('scene.json dropped back: the same preview bytes as when it was downloaded');
+
+    // 10. A final render cancelled: it stops, says so, and keeps nothing.
     if (dem === 'with-bullet') {
       await page.fill('#render-scale', '0.3');  // half an hour if it ran
       await page.click('#final-render');

@@ -76,6 +76,8 @@ const App = {
     document.getElementById('sketch-hint').textContent = !half ? '' : sk.ridges.length
       ? 'now draw arc-like curves across the ridge line (pen: arc): the sketch is used once it has both'
       : 'now draw a ridge line for the arcs to cross (pen: ridge line): the sketch is used once it has both';
+    document.getElementById('image-name').textContent =
+      s.init.method === 'halftone' ? this.imageName || `halftoning ${s.init.image}` : '';
     const edits = (s.init.cell_overrides || []).length;
     document.getElementById('cell-count').textContent = edits ? `${edits} cell(s) edited` : '';
     Sketch.draw(s);
@@ -201,6 +203,7 @@ const App = {
   },
 
   async loadText(text) {
+    this.imageName = '';
     try {
       this.scene = await (await api('POST', '/api/scene', JSON.parse(text))).json();
       this.show();
@@ -218,8 +221,37 @@ const App = {
       e.preventDefault();
       body.classList.remove('dragging');
       const file = e.dataTransfer.files[0];
-      if (file) this.loadText(await file.text());
+      if (file) this.loadFile(file);
     });
+    for (const id of ['scene-file', 'image-file'])
+      document.getElementById(id).addEventListener('change', (e) => {
+        const file = e.target.files[0];
+        e.target.value = '';  // the same file chosen again is a change again
+        if (file) this.loadFile(file);
+      });
+  },
+
+  // A picture is halftoned into the region; anything else is read as a scene file.
+  loadFile(file) {
+    const picture = file.type.startsWith('image/') || /\.(png|jpe?g|bmp|tiff?|webp)$/i.test(file.name);
+    return picture ? this.loadImage(file) : file.text().then((text) => this.loadText(text));
+  },
+
+  // paper §4.2: the picture goes to the studio's folder (studio-inputs/),
+  // and the scene halftones it.
+  async loadImage(file) {
+    this.status('reading the picture...');
+    try {
+      const { path, width, height } = await (await api('POST', '/api/image', file)).json();
+      this.scene.init.method = 'halftone';
+      this.scene.init.image = path;
+      this.imageName = `${file.name} (${width} x ${height}), halftoned into the region`;
+      this.show();
+      this.changed(0);
+    } catch (e) {
+      this.showError(e, 'init.image');
+    }
+    this.status('');
   },
 
   // The lattice's fall (paper Fig. 14c-d) over the preview, once, then the

@@ -20,11 +20,13 @@ const Scene = {
 };
 
 // Requests answer {error, key} with a 4xx: thrown as an Error carrying them.
+// A Blob (a dropped picture) goes as its bytes, anything else as JSON.
 async function api(method, url, body) {
+  const raw = body instanceof Blob;
   const res = await fetch(url, {
     method,
-    headers: body === undefined ? {} : { 'Content-Type': 'application/json' },
-    body: body === undefined ? undefined : JSON.stringify(body),
+    headers: body === undefined ? {} : { 'Content-Type': raw ? body.type || 'application/octet-stream' : 'application/json' },
+    body: body === undefined ? undefined : raw ? body : JSON.stringify(body),
   });
   if (!res.ok) {
     let info = { error: res.status + ' ' + res.statusText, key: '' };

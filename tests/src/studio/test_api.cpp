@@ -1,6 +1,8 @@
 // The studio's request functions, without HTTP (issue 7).
 #include "src/studio/api.h"
 
+#include <filesystem>
+
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
@@ -161,6 +163,36 @@ TEST(StudioApi, OnlyLoopbackHostsAndTheStudiosOwnPage) {
   EXPECT_EQ(refusal("127.0.0.1", "GET", "127.0.0.1:8080", "http://evil.example"), "");  // a GET changes nothing
   // Told to listen elsewhere (--host): the designer chose to be reachable.
   EXPECT_EQ(refusal("0.0.0.0", "POST", "studio.lan:8080", "http://studio.lan:8080"), "");
+}
+
+// paper §4.2: a picture dropped on the page is kept in the studio's folder,
+// named by its content, and a scene halftones it by that path.
+TEST(StudioApi, APictureDroppedIsKeptAndHalftoned) {
+  const std::string root = test::studio_folder("image");
+  cv::Mat img(60, 80, CV_8UC3);
+  cv::randu(img, 0, 255);
+  std::vector<uchar> jpg;
+  cv::imencode(".jpg", img, jpg);
+  const std::string bytes(jpg.begin(), jpg.end());
+  const json up = json::parse(upload_image(bytes, root).body);
+  const std::string path = up["path"];
+  EXPECT_EQ(path.rfind("studio-inputs/image-", 0), 0u) << path;
+  EXPECT_EQ(up["width"], 80);
+  EXPECT_EQ(up["height"], 60);
+  EXPECT_FALSE(cv::imread(root + "/" + path).empty());
+  EXPECT_EQ(json::parse(upload_image(bytes, root).body)["path"], path);  // the same picture, the same file
+  const Reply halftoned =
+      preview(R"({"init": {"method": "halftone", "image": ")" + path + R"("}})", root, 0.2);
+  EXPECT_EQ(halftoned.status, 200);
+  EXPECT_NE(halftoned.body, preview("{}", root, 0.2).body);
+  // Not a picture: a 400 that says so, and nothing kept.
+  const Reply bad = reply_of([&] { return upload_image("not a picture at all", root); });
+  EXPECT_EQ(bad.status, 400);
+  EXPECT_NE(json::parse(bad.body)["error"].get<std::string>().find("image:"), std::string::npos);
+  int files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(root + "/studio-inputs")) ++files;
+  EXPECT_EQ(files, 1);
+  EXPECT_THROW(upload_image(std::string(kMaxImageBytes + 1, 'x'), root), TooLarge);
 }
 
 }  // namespace

@@ -99,6 +99,9 @@ TEST(StudioServer, TheFallCancelAndForeignRequests) {
   auto bad = c.Post("/api/animation?frames=0", "{}", "application/json");
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->status, 400);
+  auto junk = c.Post("/api/image", "GIF89a but not really", "image/gif");
+  ASSERT_TRUE(junk);
+  EXPECT_EQ(junk->status, 400);
   auto none = c.Post("/api/render/77/cancel", "", "application/json");
   ASSERT_TRUE(none);
   EXPECT_EQ(none->status, 404);
