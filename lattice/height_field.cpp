@@ -29,14 +29,6 @@ double HeightField::max_height() const { return *std::max_element(h_.begin() + k
 
 // Branch-free over the window (which k decides is unpredictable); the walls
 // are padding of infinite height.
-bool HeightField::unstable(int c, int dir, const SlopeRule& rule) const {
-  const double* p = h_.data() + kPad + c;
-  const double top = *p, t = rule.drop_per_column;
-  bool any = false;
-  for (int k = 1; k <= rule.window; ++k) any |= top - p[dir * k] > k * t;
-  return any;
-}
-
 bool HeightField::too_steep(int c, int dir, double t, int window) const {
   const double* p = h_.data() + kPad + c;
   const double top = *p;
@@ -45,13 +37,18 @@ bool HeightField::too_steep(int c, int dir, double t, int window) const {
   return any;
 }
 
+bool HeightField::unstable(int c, int dir, const SlopeRule& rule) const {
+  return too_steep(c, dir, rule.drop_per_column, rule.window);
+}
+
 // The slide from c toward dir: to the next column a grain may rest on, unless
 // it is caught on the way (a chance per column passed) where the flank is no
-// steeper than the trap slope.
+// steeper than the trap slope. Only called with a trap rate (settle's fast
+// path goes to next_resting without one).
 int HeightField::slide(const Slopes& s, int c, int dir, uint64_t seed, uint64_t id, int& draws, bool& caught) const {
   const int stop = next_resting(s, c, dir);
   const double q = s.rule.trap_rate;
-  if (!(q > 0) || stop == c) return stop;
+  if (stop == c) return stop;
   const double log_miss = std::log1p(-std::min(q, 0.999999));
   for (int at = c;;) {
     const double u = uniform(seed, Stream::LatticeTrap, id, uint64_t(draws++));

@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "src/cli/cli_common.h"
+#include "src/studio/api.h"
 #include "src/studio/server.h"
 
 namespace sandpic {
@@ -23,7 +24,7 @@ struct StudioCommand {
   void run() {
     // The page runs renders and reads files under the working folder: open
     // to anyone who can reach the address.
-    if (opt.host != "127.0.0.1" && opt.host != "localhost" && opt.host != "::1")
+    if (!studio::is_loopback(opt.host))
       std::fprintf(stderr, "sandpic: note: --host %s: the studio is reachable from other machines\n", opt.host.c_str());
     studio::Server server(opt);
     const int port = server.bind();

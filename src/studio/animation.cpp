@@ -1,5 +1,6 @@
 #include "src/studio/animation.h"
 
+#include <cmath>
 #include <filesystem>
 #include <random>
 
@@ -17,16 +18,11 @@ namespace {
 
 double number_param(const std::string& name, const std::string& text, double lo, double hi, double dflt) {
   if (text.empty()) return dflt;
-  size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-  }
-  if (used != text.size() || !(v >= lo && v <= hi))
+  const auto v = number_of(text);
+  if (!v || !(*v >= lo && *v <= hi))
     throw InputError(name + ": '" + text + "' is not a number in [" + std::to_string(int(lo)) + ", " +
                      std::to_string(int(hi)) + "]");
-  return v;
+  return *v;
 }
 
 // A video through OpenCV's ffmpeg backend, which writes files only: into a
@@ -58,8 +54,9 @@ std::string encode_video(const std::vector<cv::Mat>& frames, double fps) {
 AnimationRequest animation_request(const std::string& frames, const std::string& scale, const std::string& fps,
                                    const std::string& format) {
   AnimationRequest r;
-  r.frames = int(number_param("frames", frames, 2, 120, r.frames));
-  if (!frames.empty() && double(r.frames) != std::stod(frames)) throw InputError("frames: '" + frames + "' is not a whole number");
+  const double n = number_param("frames", frames, 2, 120, r.frames);
+  if (n != std::floor(n)) throw InputError("frames: '" + frames + "' is not a whole number");
+  r.frames = int(n);
   r.scale = scale_param(scale);
   r.fps = number_param("fps", fps, 1, 60, r.fps);
   if (format.empty() || format == "frames")

@@ -56,12 +56,6 @@ void check_paths(const Scene& s, const std::string& root, const std::string& pre
     check_inside(root, s.render.figures[i].mask, prefix + "render.figures[" + std::to_string(i) + "].mask");
 }
 
-}  // namespace
-
-namespace {
-
-bool loopback(const std::string& name) { return name == "127.0.0.1" || name == "localhost" || name == "::1"; }
-
 // "localhost" from "localhost:8080", "::1" from "[::1]:8080".
 std::string host_name(const std::string& host_port) {
   if (host_port.starts_with('[')) return host_port.substr(1, host_port.find(']') - 1);
@@ -70,14 +64,16 @@ std::string host_name(const std::string& host_port) {
 
 }  // namespace
 
+bool is_loopback(const std::string& host) { return host == "127.0.0.1" || host == "localhost" || host == "::1"; }
+
 std::string refusal(const std::string& listen_host, const std::string& method, const std::string& host_header,
                     const std::string& origin) {
-  if (!loopback(listen_host)) return "";
-  if (!host_header.empty() && !loopback(host_name(host_header)))
+  if (!is_loopback(listen_host)) return "";
+  if (!host_header.empty() && !is_loopback(host_name(host_header)))
     return "Host '" + host_header + "' is not this studio's address: open it as http://" + listen_host + ":PORT/";
   if (method != "GET" && method != "HEAD" && !origin.empty()) {
     const std::string scheme = "http://";
-    if (!origin.starts_with(scheme) || !loopback(host_name(origin.substr(scheme.size()))))
+    if (!origin.starts_with(scheme) || !is_loopback(host_name(origin.substr(scheme.size()))))
       return "a request from the page of '" + origin + "' is refused: only the studio's own page may change it";
   }
   return "";
@@ -95,16 +91,23 @@ Scene scene_from_request(const std::string& body, const std::string& root) {
   return s;
 }
 
-double scale_param(const std::string& text) {
-  if (text.empty()) return 1;
+std::optional<double> number_of(const std::string& text) {
   size_t used = 0;
   double v = 0;
   try {
     v = std::stod(text, &used);
   } catch (const std::exception&) {
+    return std::nullopt;
   }
-  if (used != text.size() || !(v > 0 && v <= 4)) throw InputError("scale: '" + text + "' is not a number in (0, 4]");
+  if (used != text.size()) return std::nullopt;
   return v;
+}
+
+double scale_param(const std::string& text) {
+  if (text.empty()) return 1;
+  const auto v = number_of(text);
+  if (!v || !(*v > 0 && *v <= 4)) throw InputError("scale: '" + text + "' is not a number in (0, 4]");
+  return *v;
 }
 
 Scene scaled(Scene s, double scale) {

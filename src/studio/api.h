@@ -5,6 +5,7 @@
 // message, naming the same key, as on the command line.
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "src/scene_file.h"
@@ -41,6 +42,8 @@ std::string key_of(const std::string& message);
 // calibration paths resolve from `root` and must stay inside it. Throws
 // InputError naming the key.
 Scene scene_from_request(const std::string& body, const std::string& root);
+// The whole of `text` as a number, or nullopt (query parameters).
+std::optional<double> number_of(const std::string& text);
 // The `scale` query parameter ("" = 1): a number in (0, 4], else InputError
 // naming it. The page renders the final DEM smaller than the design.
 double scale_param(const std::string& text);
@@ -55,6 +58,7 @@ void check_inside(const std::string& root, const std::string& path, const std::s
 // sends one), so a web page on another site the designer has open cannot
 // read the studio or start renders. A studio told to listen elsewhere
 // (--host) checks neither. "" when the request may go on, else why not.
+bool is_loopback(const std::string& host);
 std::string refusal(const std::string& listen_host, const std::string& method, const std::string& host_header,
                     const std::string& origin);
 

@@ -153,16 +153,14 @@ async function main() {
     const RH = scene0.region.height;
     // Window px to page px; the page scrolled to its top first (checking a
     // radio button lower down scrolls it), the canvas whole in view.
-    const toPage = async (x, y) => {
+    const pageAt = async () => {
       await page.evaluate(() => window.scrollTo(0, 0));
       const box = await page.locator('#sketch').boundingBox();
-      return [box.x + (x * box.width) / W, box.y + (y * box.height) / H];
+      return (x, y) => [box.x + (x * box.width) / W, box.y + (y * box.height) / H];
     };
     const stroke = async (points) => {
-      const first = await toPage(...points[0]);
-      const box = await page.locator('#sketch').boundingBox();
-      const at = (x, y) => [box.x + (x * box.width) / W, box.y + (y * box.height) / H];
-      await page.mouse.move(...first);
+      const at = await pageAt();
+      await page.mouse.move(...at(...points[0]));
       await page.mouse.down();
       for (const p of points.slice(1)) await page.mouse.move(...at(...p), { steps: 12 });
       await page.mouse.up();
@@ -220,7 +218,7 @@ async function main() {
     const big = cells.reduce((b, c, i) => ((c[2] - c[0]) * (c[3] - c[1]) > (b.c[2] - b.c[0]) * (b.c[3] - b.c[1]) ? { c, i } : b),
                              { c: cells[0], i: 0 });
     const wasSeq = seq;
-    await page.mouse.click(...(await toPage((big.c[0] + big.c[2]) / 2, (big.c[1] + big.c[3]) / 2)));
+    await page.mouse.click(...(await pageAt())((big.c[0] + big.c[2]) / 2, (big.c[1] + big.c[3]) / 2));
     seq = await waitForPreview(page, wasSeq);
     const overrides = await page.evaluate(() => App.scene.init.cell_overrides);
     assert.deepEqual(overrides, [{ cell: big.i, dominant: 4, secondary: 3 }], 'the cell clicked takes the classes chosen');
