@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <queue>
 
 #include "src/errors.h"
 #include "src/frames.h"
@@ -127,10 +128,50 @@ class LatticeSimulator final : public Simulator {
     const Water water = settling ? water_model(s) : Water{};
     Arrivals arrivals;
     std::vector<double> exit_at(settling ? in.grains.size() : 0);
+    // A landing spot (a pixel column) is busy for lattice.spot_busy_s after
+    // a grain lands on it, as the DEM's insert stage waits while a grain is in
+    // the way. Grains due on a busy spot wait there; when it frees, the first
+    // of them in falling order lands, as in the DEM, whose waiting grains all
+    // retry at once and go in falling order. One event per busy spot waits in
+    // `arrivals`, so a long queue costs a heap push per grain, not per retry.
+    const double busy_s = settling ? s.lattice.spot_busy_s : 0;
+    struct Spot {
+      double free_at = -INFINITY;
+      std::priority_queue<int64_t, std::vector<int64_t>, std::greater<>> waiting;  // falling-order indices
+    };
+    std::vector<Spot> spots(busy_s > 0 ? size_t(W) : 0);
+    std::vector<uint8_t> queued(busy_s > 0 ? in.grains.size() : 0, 0);
+    int64_t waited = 0;
+    double last_landing_s = 0;
+    auto land_at = [&](double time, int32_t id) {
+      last_landing_s = std::max(last_landing_s, time);
+      land(id, exit_at[size_t(id)]);
+    };
     auto land_until = [&](double t) {
-      for (; !arrivals.empty() && arrivals.top().time <= t; arrivals.pop()) {
-        const int32_t id = in.order.grain[size_t(arrivals.top().order)];
-        land(id, exit_at[size_t(id)]);
+      while (!arrivals.empty() && arrivals.top().time <= t) {
+        const Arrival a = arrivals.top();
+        arrivals.pop();
+        const int32_t id = in.order.grain[size_t(a.order)];
+        if (busy_s <= 0) {
+          land_at(a.time, id);
+          continue;
+        }
+        Spot& spot = spots[size_t(std::clamp(int(std::floor(exit_at[size_t(id)])), 0, W - 1))];
+        int32_t lands = id;
+        if (queued[size_t(id)]) {  // the spot's event: it is free, the first waiting grain lands
+          lands = in.order.grain[size_t(spot.waiting.top())];
+          spot.waiting.pop();
+          queued[size_t(lands)] = 0;
+        } else if (spot.free_at > a.time || !spot.waiting.empty()) {
+          spot.waiting.push(a.order);
+          queued[size_t(id)] = 1;
+          ++waited;
+          if (spot.waiting.size() == 1) arrivals.push({spot.free_at, a.order});
+          continue;
+        }
+        spot.free_at = a.time + busy_s;
+        if (!spot.waiting.empty()) arrivals.push({spot.free_at, spot.waiting.top()});
+        land_at(a.time, lands);
       }
     };
     for (size_t u = 0; u < in.seg.units.size(); ++u) {
@@ -160,6 +201,10 @@ class LatticeSimulator final : public Simulator {
     if (schedule.count > 0) in.frames.frame(out.class_map);  // the last frame is the picture
     out.stats["columns"] = columns;
     out.stats["pile_max_height_px"] = field.max_height();
+    if (settling) {
+      out.stats["last_landing_s"] = last_landing_s;
+      out.stats["grains_waited"] = waited;
+    }
     for (int k = 0; k < kClasses; ++k) {
       out.stats["repose_deg"].push_back(repose_angle_deg(s, k));
       out.stats["window_columns"].push_back(rules[size_t(rule_of[k])].window);

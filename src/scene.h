@@ -156,6 +156,13 @@ struct Scene {
     // repose (0: grains only stop where the slope is below the angle).
     double trap_rate = 0;
     double trap_deg = 3;
+    // paper §7 as the DEM does it: a grain is put in above the pile only
+    // where no other is in its way, so a busy outlet's grains queue and land
+    // later than Eq. 1 says, in a mixed order. The lattice's stand-in: a
+    // landing spot (a pixel column) stays busy this long after a grain lands
+    // on it, and a grain due there waits until it is free (settling arrival
+    // only; 0: never busy). calibrate --spot fits it.
+    double spot_busy_s = 0;
     std::string calibration;  // `sandpic calibrate` output whose "lattice" values replace these
     // paper §7 + the water: grains land in the order they reach the pile, at
     // dem.release_rate and their class's settling speed, as in the DEM.

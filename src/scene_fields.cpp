@@ -578,6 +578,9 @@ std::vector<Field> make_fields() {
            "chance per column slid that a rolling grain is caught on the flank (paper §8, BCRE [24]); 0: never"),
       real("lattice.trap_deg", [](S& s) -> double& { return s.lattice.trap_deg; }, 0, 45,
            "how much steeper than its angle of repose a flank may be where a rolling grain is caught, degrees"),
+      real("lattice.spot_busy_s", [](S& s) -> double& { return s.lattice.spot_busy_s; }, 0, 10,
+           "seconds a landing spot (a pixel column) stays busy after a grain lands on it; grains due there wait, "
+           "as the DEM's insertion does (settling arrival only); 0: never"),
       text("lattice.calibration", [](S& s) -> auto& { return s.lattice.calibration; },
            "a file written by sandpic calibrate: its lattice values replace the scene's (lattice mode only)"),
       choice<LatticeArrival>("lattice.arrival", [](S& s) -> auto& { return s.lattice.arrival; },

@@ -54,6 +54,7 @@ struct Params {
   std::vector<double> angle, runout;  // per group
   double bulk = 1, surface = 0;
   double trap_rate = 0, trap_deg = 3;
+  double spot_busy_s = 0;
 };
 
 class Fit {
@@ -94,6 +95,7 @@ class Fit {
     s.lattice.surface_px = p.surface;
     s.lattice.trap_rate = p.trap_rate;
     s.lattice.trap_deg = p.trap_deg;
+    s.lattice.spot_busy_s = p.spot_busy_s;
   }
 
  private:
@@ -304,6 +306,7 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   p.surface = base.lattice.surface_px;
   p.trap_rate = base.lattice.trap_rate;
   p.trap_deg = base.lattice.trap_deg;
+  p.spot_busy_s = base.lattice.spot_busy_s;
   c.error_before = fit.error(p);
   // Two pile sizes at least (their heights a quarter apart) tell the
   // surface layer from the bulk.
@@ -323,24 +326,34 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
     }
     return q;
   };
-  if (!opt.trap) {
+  // Trapping moves the angle the flanks end at, and a busy spot changes which
+  // grains land first, so the angles are refitted for every candidate: the
+  // scene's own values, none, and a small grid of each asked for.
+  std::vector<std::pair<double, double>> traps = {{p.trap_rate, p.trap_deg}};
+  if (opt.trap) {
+    traps.emplace_back(0, 3);
+    for (double rate : {0.2, 1.0})
+      for (double deg : {3.0, 5.0}) traps.emplace_back(rate, deg);
+  }
+  std::vector<double> spots = {p.spot_busy_s};
+  if (opt.spot)
+    for (double v : {0.0, 0.006, 0.008, 0.010, 0.012, 0.014})
+      if (v != p.spot_busy_s) spots.push_back(v);
+  if (traps.size() * spots.size() == 1) {
     p = fit_all(p);
   } else {
-    // Trapping moves the angle the flanks end at, so the angles are refitted
-    // for every candidate: the scene's own value, none, and a small grid.
-    std::vector<std::pair<double, double>> grid = {{p.trap_rate, p.trap_deg}, {0, 3}};
-    for (double rate : {0.2, 1.0})
-      for (double deg : {3.0, 5.0}) grid.emplace_back(rate, deg);
     Params best;
     double best_e = INFINITY;
-    for (auto [rate, deg] : grid) {
-      Params q = p;
-      q.trap_rate = rate, q.trap_deg = deg;
-      log("trap_rate " + std::to_string(rate) + ", trap_deg " + std::to_string(deg) + ":");
-      q = fit_all(q);
-      const double e = fit.error(q);
-      if (e < best_e) best_e = e, best = q;
-    }
+    for (double spot : spots)
+      for (auto [rate, deg] : traps) {
+        Params q = p;
+        q.trap_rate = rate, q.trap_deg = deg, q.spot_busy_s = spot;
+        log("spot_busy_s " + std::to_string(spot) + ", trap_rate " + std::to_string(rate) + ", trap_deg " +
+            std::to_string(deg) + ":");
+        q = fit_all(q);
+        const double e = fit.error(q);
+        if (e < best_e) best_e = e, best = q;
+      }
     p = best;
   }
   c.error_after = fit.error(p);
@@ -352,6 +365,7 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   c.surface_px = p.surface;
   c.trap_rate = p.trap_rate;
   c.trap_deg = p.trap_deg;
+  c.spot_busy_s = p.spot_busy_s;
   c.lattice_runs = fit.runs();
   return c;
 }
@@ -365,6 +379,7 @@ ordered_json calibration_json(const Scene& base, const Calibration& c) {
   j["lattice"]["surface_px"] = c.surface_px;
   j["lattice"]["trap_rate"] = c.trap_rate;
   j["lattice"]["trap_deg"] = c.trap_deg;
+  j["lattice"]["spot_busy_s"] = c.spot_busy_s;
   ordered_json& f = j["fit"];
   f["physics"] = {{"friction", base.physics.friction},
                   {"restitution", base.physics.restitution},

@@ -27,6 +27,10 @@ struct CalibrateOptions {
   // Also fit lattice.trap_rate and trap_deg (rolling grains caught on the
   // flanks): the whole fit once per candidate on a small grid, the best kept.
   bool trap = false;
+  // Also fit lattice.spot_busy_s (how long a landing spot stays busy, so a
+  // busy outlet's grains queue as in the DEM): the whole fit once per
+  // candidate, the best kept.
+  bool spot = false;
 };
 
 // The scenes the fit runs on: the scene's physics (friction, restitution,
@@ -38,6 +42,7 @@ struct Calibration {
   std::array<double, kClasses> repose_deg{}, runout_px{};
   double bulk = 1, surface_px = 0;
   double trap_rate = 0, trap_deg = 3;
+  double spot_busy_s = 0;
   std::vector<std::vector<int>> groups;  // classes the DEM cannot tell apart share their values
   double error_before = 0, error_after = 0;  // mean silhouette error, lattice vs each DEM run
   double noise_floor = 0;                    // mean silhouette error between DEM seeds of one scene

@@ -116,8 +116,12 @@ std::vector<Job> lattice_sweep(const Scene& lat) {
   for (double f : {0.95, 1.05})
     add("lattice.bulk=" + g(eff.lattice.bulk * f), [&](Scene& s) { s.lattice.bulk *= f; });
   add("lattice.surface_px=" + g(eff.lattice.surface_px + 2), [&](Scene& s) { s.lattice.surface_px += 2; });
-  if (eff.lattice.arrival == LatticeArrival::Settling)  // what landing in falling order would cost
+  if (eff.lattice.arrival == LatticeArrival::Settling) {  // what landing in falling order would cost
     add("lattice.arrival=release", [](Scene& s) { s.lattice.arrival = LatticeArrival::Release; });
+    // Busy landing spots off, or on at the value the DEM's outlets took at 20,000 grains.
+    const double spot = eff.lattice.spot_busy_s > 0 ? 0 : 0.01;
+    add("lattice.spot_busy_s=" + g(spot), [spot](Scene& s) { s.lattice.spot_busy_s = spot; });
+  }
   return jobs;
 }
 

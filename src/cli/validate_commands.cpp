@@ -118,6 +118,7 @@ struct CalibrateCommand {
   std::string out, seeds = "1,2", grains = "8000", runs;
   int scenes = 3;
   bool trap = false;
+  bool spot = false;
 
   void add_to(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
@@ -135,6 +136,9 @@ struct CalibrateCommand {
     cmd->add_flag("--trap", trap,
                   "also fit lattice.trap_rate and trap_deg (rolling grains caught on the flanks): the fit runs once "
                   "per candidate of a small grid");
+    cmd->add_flag("--spot", spot,
+                  "also fit lattice.spot_busy_s (a busy outlet's grains queue and land mixed, as in the DEM): the fit "
+                  "runs once per candidate of a small grid");
     cmd->callback([this] { run(); });
   }
 
@@ -142,6 +146,7 @@ struct CalibrateCommand {
     Scene s = scene.build();
     CalibrateOptions opt;
     opt.trap = trap;
+    opt.spot = spot;
     opt.grains = list_option<int64_t>("--grains", grains, [](const std::string& i) {
       return int64_t(positive("--grains", i, 10000000));
     });
@@ -158,9 +163,9 @@ struct CalibrateCommand {
     write_atomic(out, calibration_json(s, c).dump(2) + "\n");
     std::printf("sandpic calibrate: %zu scenes x %zu DEM seeds, %lld lattice runs\n", c.scenes.size(),
                 opt.physics_seeds.size(), (long long)c.lattice_runs);
-    std::printf("repose_deg %.2f %.2f %.2f %.2f  runout_px %g %g %g %g  bulk %.4f  surface_px %.2f  trap_rate %g  trap_deg %g\n",
+    std::printf("repose_deg %.2f %.2f %.2f %.2f  runout_px %g %g %g %g  bulk %.4f  surface_px %.2f  trap_rate %g  trap_deg %g  spot_busy_s %g\n",
                 c.repose_deg[0], c.repose_deg[1], c.repose_deg[2], c.repose_deg[3], c.runout_px[0], c.runout_px[1],
-                c.runout_px[2], c.runout_px[3], c.bulk, c.surface_px, c.trap_rate, c.trap_deg);
+                c.runout_px[2], c.runout_px[3], c.bulk, c.surface_px, c.trap_rate, c.trap_deg, c.spot_busy_s);
     std::printf("silhouette error on the calibration scenes: %.5f before, %.5f after (DEM seed to seed %.5f)\n",
                 c.error_before, c.error_after, c.noise_floor);
   }

@@ -159,6 +159,9 @@ if [ "$BULLET" = with-bullet ]; then
   if grep -q '"surface_px"' "$T/cal2.json" && [ "$(ls "$T/calruns" | grep -c '\.classes\.png$')" = 4 ]; then ok; else bad "cal2: $(ls "$T/calruns")"; fi
   expect 0 "calibrate kept runs" -- "$BIN" calibrate "${TINY[@]}" --grains 300,700 --scenes 1 --runs "$T/calruns" --out "$T/cal3.json"
   if cmp -s "$T/cal2.json" "$T/cal3.json"; then ok; else bad "a refit from kept runs differs"; fi
+  # --spot also fits how long a landing spot stays busy (reusing the kept piles).
+  expect 0 "calibrate spot" -- "$BIN" calibrate "${TINY[@]}" --grains 300,700 --scenes 1 --runs "$T/calruns" --spot --out "$T/cal4.json"
+  if grep -q '"spot_busy_s"' "$T/cal4.json" && grep -q "spot_busy_s" "$T/out"; then ok; else bad "cal4: $(cat "$T/cal4.json")"; fi
   expect 2 "calibrate bad size list" -- "$BIN" calibrate --grains 8000,x --out "$T/c3.json"
   one_line; err_has "--grains"; absent "$T/c3.json"
   expect 2 "validate few seeds" -- "$BIN" validate "${TINY[@]}" --seeds 3 --out "$T/val"
@@ -177,6 +180,11 @@ else
 fi
 expect 2 "missing calibration" -- "$BIN" render -o "$T/e.png" --set lattice.calibration="$T/nothing.json"
 one_line; err_has "lattice.calibration"; absent "$T/e.png"
+# A busy landing spot makes grains wait (counted in the stats); a negative time is a bad scene.
+expect 0 "busy spots" -- "$BIN" render --scale 0.2 --set lattice.spot_busy_s=0.01 -o "$T/spot.png" --stats "$T/spot.json"
+if grep -Eq '"grains_waited": [1-9]' "$T/spot.json"; then ok; else bad "spot stats: $(grep -o '"grains_waited": [0-9]*' "$T/spot.json")"; fi
+expect 2 "negative spot time" -- "$BIN" render -o "$T/e.png" --set lattice.spot_busy_s=-1
+one_line; err_has "lattice.spot_busy_s"; absent "$T/e.png"
 
 # paper §5.2: a sketch drawn as a picture, painted over, read back as the sketch.
 expect 0 "sketch" -- "$BIN" sketch "$ROOT/examples/fig07.json" -o "$T/sketch.png"

@@ -56,6 +56,42 @@ TEST(CalibrateFit, TwoSizesRecoverTheBulkAndTheSurfaceLayer) {
   EXPECT_GT(one.bulk, 1.1);  // the 3 px layer read as bulk on a low pile
 }
 
+// A "DEM" whose outlets are busy (lattice.spot_busy_s) lands grains in
+// another order; calibrate --spot must find the time again among its grid,
+// the other rule values refitted for each candidate.
+TEST(CalibrateFit, SpotFindsTheBusyTimeOfAQueuingTruth) {
+  class Queuing final : public Simulator {
+   public:
+    Cost cost(const Scene& s) const override { return lattice_->cost(s); }
+    SimResult simulate(const SimInput& in, Progress& progress) override {
+      Scene s = in.scene;
+      s.lattice = Scene{}.lattice;  // the default rule values
+      s.lattice.spot_busy_s = 0.008;
+      SimInput changed{s, in.grains, in.seg, in.order};
+      return lattice_->simulate(changed, progress);
+    }
+
+   private:
+    std::unique_ptr<Simulator> lattice_ = make_lattice_simulator();
+  };
+  SimulatorFactory make = [](const Scene& s) -> std::unique_ptr<Simulator> {
+    if (s.mode == Mode::Dem) return std::make_unique<Queuing>();
+    return make_lattice_simulator();
+  };
+  Scene base;
+  CalibrateOptions opt;
+  opt.grains = {3000};
+  opt.scenes = 1;
+  opt.spot = true;
+  std::vector<std::string> lines;
+  Calibration c = calibrate(base, opt, make, [&](const std::string& l) { lines.push_back(l); });
+  std::printf("spot: %g s, error %.5f -> %.5f\n", c.spot_busy_s, c.error_before, c.error_after);
+  EXPECT_EQ(c.spot_busy_s, 0.008);
+  EXPECT_GT(c.error_before, 0.001);
+  EXPECT_LT(c.error_after, 0.5 * c.error_before);
+  EXPECT_EQ(calibration_json(base, c)["lattice"]["spot_busy_s"].get<double>(), 0.008);
+}
+
 // --runs: the "DEM" piles are kept and the second calibration reads them
 // back instead of running them, and fits the same values.
 TEST(CalibrateFit, KeptPilesAreReusedWhileTheirDigestHolds) {
