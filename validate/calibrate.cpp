@@ -329,16 +329,16 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   // Trapping moves the angle the flanks end at, and a busy spot changes which
   // grains land first, so the angles are refitted for every candidate: the
   // scene's own values, none, and a small grid of each asked for.
+  // A candidate equal to the scene's own is fitted once.
+  auto add_new = [](auto& list, auto v) {
+    if (std::find(list.begin(), list.end(), v) == list.end()) list.push_back(v);
+  };
   std::vector<std::pair<double, double>> traps = {{p.trap_rate, p.trap_deg}};
-  if (opt.trap) {
-    traps.emplace_back(0, 3);
-    for (double rate : {0.2, 1.0})
-      for (double deg : {3.0, 5.0}) traps.emplace_back(rate, deg);
-  }
+  if (opt.trap)
+    for (auto t : {std::pair{0.0, 3.0}, {0.2, 3.0}, {0.2, 5.0}, {1.0, 3.0}, {1.0, 5.0}}) add_new(traps, t);
   std::vector<double> spots = {p.spot_busy_s};
   if (opt.spot)
-    for (double v : {0.0, 0.006, 0.008, 0.010, 0.012, 0.014})
-      if (v != p.spot_busy_s) spots.push_back(v);
+    for (double v : {0.0, 0.006, 0.008, 0.010, 0.012, 0.014}) add_new(spots, v);
   if (traps.size() * spots.size() == 1) {
     p = fit_all(p);
   } else {

@@ -124,8 +124,7 @@ TEST(LatticeSimulator, FramesAccountForEveryGrain) {
 
 // How much higher the small grains (S3, S4) lie than the big ones: the
 // difference of their mean heights over the mean height of all.
-double small_above_big(const Scene& s) {
-  const FramedRun run = framed_run(s, 0);
+double small_above_big(const Scene& s, const FramedRun& run) {
   double sum[2] = {0, 0}, n[2] = {0, 0};
   for (size_t i = 0; i < run.result.y.size(); ++i) {
     const int small = run.init.grains.cls[i] >= 2;
@@ -133,6 +132,7 @@ double small_above_big(const Scene& s) {
   }
   return (sum[1] / n[1] - sum[0] / n[0]) / ((sum[0] + sum[1]) / (n[0] + n[1]));
 }
+double small_above_big(const Scene& s) { return small_above_big(s, framed_run(s, 0)); }
 
 // paper §7 in water: a unit's small grains sink at a quarter of the big ones'
 // speed, so they land last and cap its pile, as in the DEM.
@@ -173,10 +173,10 @@ TEST(LatticeSimulator, ABusyOutletsGrainsQueueAndLandMixed) {
   Scene s = test::one_ellipse_scene();
   const FramedRun free_run = framed_run(s, 0);
   EXPECT_EQ(free_run.result.stats["grains_waited"].get<int64_t>(), 0);
-  const double free_cap = small_above_big(s);
+  const double free_cap = small_above_big(s, free_run);
   s.lattice.spot_busy_s = 0.02;  // a 5.6 px outlet takes about 280 grains/s of the 4000 released
   const FramedRun busy = framed_run(s, 0);
-  const double busy_cap = small_above_big(s);
+  const double busy_cap = small_above_big(s, busy);
   const int64_t total = busy.init.grains.size();
   const int64_t waited = busy.result.stats["grains_waited"].get<int64_t>();
   const double last = busy.result.stats["last_landing_s"].get<double>();
