@@ -39,7 +39,7 @@ std::function<void(const std::string&)> logger(const char* command) {
 
 struct ValidateCommand {
   SceneOptions scene;
-  std::string out, sweep = "lattice,dem", calibration;
+  std::string out, sweep = "lattice,dem", calibration, runs;
   int seeds = 4, bands = 8;
   double blur = 3;
   int64_t all_dynamic_max = 5000;
@@ -51,6 +51,8 @@ struct ValidateCommand {
     cmd->add_option("--out", out, "folder for report.html, report.json and the pictures (DEM runs are kept in "
                                   "OUT/runs and reused while the scene is unchanged)")->required();
     cmd->add_option("--seeds", seeds, "DEM runs beyond the scene's physics seed (at least 4)")->capture_default_str();
+    cmd->add_option("--runs", runs, "keep the DEM runs in this folder instead of OUT/runs (a folder shared by "
+                                    "several reports; a run is reused while its scene digest holds)");
     cmd->add_option("--sweep", sweep, "settings swept for error against time: lattice, dem, both or none")
         ->capture_default_str();
     cmd->add_option("--calibration", calibration, "a sandpic calibrate file for the lattice run");
@@ -87,9 +89,10 @@ struct ValidateCommand {
     need_dem(s, "validate");
     while (out.size() > 1 && out.back() == '/') out.pop_back();
     check_folder(out);
-    check_folder(out + "/runs");
+    if (runs.empty()) runs = out + "/runs";
+    check_folder(runs);
     for (const char* f : {"report.json", "report.html", "lattice.png", "difference.png"}) check_writable(out + "/" + f);
-    opt.cache_dir = out + "/runs";
+    opt.cache_dir = runs;
     auto threads = limit_threads(scene.threads);
     const std::string reproduce = "sandpic validate: " + scene.reproduce(s) +
                                   (scene.scale != 1 ? ", --scale " + std::to_string(scene.scale) : std::string()) +

@@ -166,6 +166,11 @@ if [ "$BULLET" = with-bullet ]; then
   one_line; err_has "--grains"; absent "$T/c3.json"
   expect 2 "validate few seeds" -- "$BIN" validate "${TINY[@]}" --seeds 3 --out "$T/val"
   one_line; err_has "--seeds"; absent "$T/val/report.html"
+  # --runs: the DEM runs go to a folder of their own, and a second report reuses them.
+  expect 0 "validate kept runs" -- "$BIN" validate "${TINY[@]}" --sweep none --runs "$T/vruns" --out "$T/val1"
+  if [ "$(ls "$T/vruns" | grep -c '\.classes\.png$')" = 5 ] && [ ! -e "$T/val1/runs" ]; then ok; else bad "vruns: $(ls "$T/vruns")"; fi
+  expect 0 "validate reuses runs" -- "$BIN" validate "${TINY[@]}" --sweep none --runs "$T/vruns" --out "$T/val2"
+  if [ -s "$T/val2/report.html" ] && [ -z "$(find "$T/vruns" -newer "$T/val1/report.json")" ]; then ok; else bad "DEM runs were redone"; fi
 else
   expect 2 "dem without Bullet" -- "$BIN" render -o "$T/e.png" --mode dem
   one_line; err_has "Bullet"; absent "$T/e.png"
