@@ -7,6 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "src/errors.h"
+#include "src/grain_table.h"
 #include "src/render.h"
 
 namespace sandpic {
@@ -96,6 +97,7 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
   timing["render_s"] = clock.lap();
   if (!cv::imencode(".png", out.picture, out.png)) throw SimulationError("PNG encoding failed");
   timing["encode_s"] = clock.lap();
+  if (opt.grains) out.grains = grain_table_csv(s, init.grains, seg, order, sim_result.x, sim_result.y);
   if (opt.stages) {
     out.stages = stage_pictures(s, init, seg, order);
     out.stages.emplace_back("5-picture.png", out.picture);

@@ -27,6 +27,7 @@ struct RunOptions {
   int frames = 0;
   std::function<void(const cv::Mat& picture)> frame = nullptr;
   Limits limits = {};  // checked against estimate_run before anything is allocated
+  bool grains = false;  // keep every grain's release point and resting place (RunResult::grains)
 };
 
 struct RunResult {
@@ -35,6 +36,7 @@ struct RunResult {
   std::vector<uchar> png;   // the picture, encoded
   ordered_json stats;
   Stages stages;
+  std::string grains;  // with RunOptions::grains: the grain table (src/grain_table.h), CSV
 };
 
 // Throws InputError (bad scene or file), SimulationError (a grain lost, a

@@ -17,6 +17,7 @@
 #include "src/cli/cli_common.h"
 #include "src/cli/frame_output.h"
 #include "src/errors.h"
+#include "src/grain_table.h"
 #include "src/output.h"
 #include "src/pipeline.h"
 #include "src/init/init.h"
@@ -24,6 +25,7 @@
 #include "src/scene_file.h"
 #include "src/segment/sketch.h"
 #include "validate/compare.h"
+#include "validate/grain_compare.h"
 #include "validate/friction_bench.h"
 #include "validate/layer_bench.h"
 
@@ -44,7 +46,7 @@ namespace {
 
 struct RenderCommand {
   SceneOptions scene;
-  std::string out, stats, stages, frames, video;
+  std::string out, stats, stages, frames, video, grains;
   int frame_count = 60;
   double fps = 24, max_memory_gb = 0, max_hours = 24;
 
@@ -54,6 +56,8 @@ struct RenderCommand {
     cmd->add_option("-o,--out", out, "output PNG")->required();
     cmd->add_option("--stats", stats, "write statistics (grain counts, timings) as JSON");
     cmd->add_option("--stages", stages, "write the intermediate pictures of paper Fig. 2 into this folder");
+    cmd->add_option("--grains", grains,
+                    "write every grain as CSV: id, class, unit, falling order, where its fall started, where it rests");
     cmd->add_option("--frames", frames, "write pictures of the fall (paper Fig. 14c-d) as frame-00000.png, ... into this folder");
     cmd->add_option("--video", video, "write the pictures of the fall as an MP4 video (mp4v)");
     cmd->add_option("--frame-count", frame_count, "frames of the fall, evenly spaced by grains released; the last is the picture")
@@ -75,11 +79,13 @@ struct RenderCommand {
       while (dir->size() > 1 && dir->back() == '/') dir->pop_back();
     check_writable(out);
     if (!stats.empty()) check_writable(stats);
+    if (!grains.empty()) check_writable(grains);
     if (!stages.empty() && !std::filesystem::is_directory(stages)) check_writable(stages);
     auto threads = limit_threads(scene.threads);
     auto sim = make_simulator(s);
     RunOptions opt;
     opt.stages = !stages.empty();
+    opt.grains = !grains.empty();
     opt.progress = Progress::stderr_is_terminal();
     opt.limits = {max_memory_gb * 1e9, max_hours * 3600, 600};
     // Streamed into temporaries as they come; moved into place at the end.
@@ -102,6 +108,7 @@ struct RenderCommand {
     }
     write_atomic(out, std::string_view(reinterpret_cast<const char*>(r.png.data()), r.png.size()));
     if (!stats.empty()) write_atomic(stats, r.stats.dump(2) + "\n");
+    if (!grains.empty()) write_atomic(grains, r.grains);
     for (auto& [name, img] : r.stages) write_png(stages + "/" + name, img);
     if (fall) fall->commit();
   }
@@ -353,6 +360,68 @@ struct CompareCommand {
   }
 };
 
+// Issue 4: two runs of one scene grain by grain (render --grains): how far
+// each class travels from where its fall started, how wide a unit spreads,
+// and, for runs with the same physics seed, how far apart each grain rests.
+struct CompareGrainsCommand {
+  std::string a, b;
+  bool as_json = false;
+
+  void add_to(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand("compare-grains", "two runs of one scene compared grain by grain (render --grains tables)");
+    cmd->add_option("a", a, "first grain table (CSV from render --grains)")->required();
+    cmd->add_option("b", b, "second grain table, of the same scene and layout")->required();
+    cmd->add_flag("--json", as_json, "print JSON");
+    cmd->callback([this] { run(); });
+  }
+
+  static std::vector<GrainRow> load(const std::string& path) {
+    std::optional<std::string> text = read_text(path);
+    if (!text) throw InputError("cannot read grain table '" + path + "'");
+    return parse_grain_table(*text, path);
+  }
+
+  static ordered_json travel_json(const TravelStats& t) {
+    return {{"grains", t.grains}, {"mean_px", t.mean_px}, {"median_px", t.median_px}, {"p90_px", t.p90_px},
+            {"within_2px", t.within_2px}};
+  }
+
+  void run() {
+    const GrainComparison c = compare_grains(load(a), load(b), a, b);
+    ordered_json j;
+    j["grains"] = c.grains;
+    j["same_release"] = c.same_release;
+    for (int k = 0; k < kClasses; ++k) {
+      ordered_json cls;
+      cls["a"] = travel_json(c.travel_a[size_t(k)]);
+      cls["b"] = travel_json(c.travel_b[size_t(k)]);
+      cls["travel_distance_px"] = c.travel_distance_px[size_t(k)];
+      j["travel"].push_back(cls);
+    }
+    j["unit_spread_px"] = {{"a", c.unit_spread_a_px}, {"b", c.unit_spread_b_px}};
+    auto number_or_null = [](double v) { return std::isfinite(v) ? ordered_json(v) : ordered_json(nullptr); };
+    j["grain_distance_px"] = {{"x", number_or_null(c.grain_dx_px)}, {"y", number_or_null(c.grain_dy_px)}};
+    if (as_json) {
+      std::cout << j.dump(2) << "\n";
+      return;
+    }
+    std::printf("%lld grains, %s\n", static_cast<long long>(c.grains),
+                c.same_release ? "released at the same points (same scene and physics seed)"
+                               : "released at different points (another physics seed): travel compares, grains do not");
+    std::printf("travel from where the fall started (px): median / p90 / share within 2 px\n");
+    std::printf("class  grains      a: median    p90  <=2px      b: median    p90  <=2px   distance\n");
+    for (int k = 0; k < kClasses; ++k) {
+      const TravelStats &ta = c.travel_a[size_t(k)], &tb = c.travel_b[size_t(k)];
+      if (ta.grains == 0) continue;
+      std::printf("S%d    %7lld   %12.2f %6.2f %6.2f   %12.2f %6.2f %6.2f   %8.2f\n", k + 1,
+                  static_cast<long long>(ta.grains), ta.median_px, ta.p90_px, ta.within_2px, tb.median_px, tb.p90_px,
+                  tb.within_2px, c.travel_distance_px[size_t(k)]);
+    }
+    std::printf("unit spread (px)   a %.2f   b %.2f\n", c.unit_spread_a_px, c.unit_spread_b_px);
+    if (c.same_release) std::printf("grain distance (px)  x %.2f   y %.2f\n", c.grain_dx_px, c.grain_dy_px);
+  }
+};
+
 int cli_main(int argc, char** argv) {
   // OpenCV's own warnings would break the one-line error promise.
   cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
@@ -365,6 +434,7 @@ int cli_main(int argc, char** argv) {
   BenchLayersCommand bench_layers;
   BenchFrictionCommand bench_friction;
   CompareCommand compare;
+  CompareGrainsCommand compare_grains_cmd;
   render.add_to(app);
   scene.add_to(app);
   sketch.add_to(app);
@@ -372,6 +442,7 @@ int cli_main(int argc, char** argv) {
   bench_layers.add_to(app);
   bench_friction.add_to(app);
   compare.add_to(app);
+  compare_grains_cmd.add_to(app);
   auto validation = add_validation_commands(app);
   auto stress = add_stress_command(app);
   auto studio = add_studio_command(app);
