@@ -15,14 +15,10 @@ constexpr const char* kHeader = "id,class,unit,order,release_x,x,y";
 
 std::string grain_table_csv(const Scene& s, const GrainSet& g, const Segmentation& seg, const FallingOrder& order,
                             const std::vector<float>& x, const std::vector<float>& y) {
-  const size_t n = size_t(g.size());
-  std::vector<int32_t> unit(n, -1);
-  std::vector<int64_t> rank(n, -1);
-  for (size_t u = 0; u + 1 < order.unit_begin.size(); ++u)
-    for (int64_t i = order.unit_begin[u]; i < order.unit_begin[u + 1]; ++i) {
-      const size_t id = size_t(order.grain[size_t(i)]);
-      unit[id] = int32_t(u), rank[id] = i;
-    }
+  // Every grain of the region is in a unit (seg.unit_of) and released once.
+  const size_t n = seg.unit_of.size();
+  std::vector<int64_t> rank(n);
+  for (size_t i = 0; i < order.grain.size(); ++i) rank[size_t(order.grain[i])] = int64_t(i);
   const ReleaseModel model = release_model(s);
   std::vector<Outlet> outlets;
   for (const Unit& u : seg.units) outlets.push_back(outlet(model, u));
@@ -30,9 +26,9 @@ std::string grain_table_csv(const Scene& s, const GrainSet& g, const Segmentatio
   out.reserve(n * 40);
   char line[160];
   for (size_t id = 0; id < n; ++id) {
-    if (rank[id] < 0) continue;  // not released: no grain there
-    const double release_x = exit_x(model, outlets[size_t(unit[id])], int32_t(id));
-    std::snprintf(line, sizeof line, "%zu,%d,%d,%lld,%.3f,%.3f,%.3f\n", id, int(g.cls[id]), unit[id],
+    const int32_t unit = seg.unit_of[id];
+    const double release_x = exit_x(model, outlets[size_t(unit)], int32_t(id));
+    std::snprintf(line, sizeof line, "%zu,%d,%d,%lld,%.3f,%.3f,%.3f\n", id, int(g.cls[id]), unit,
                   static_cast<long long>(rank[id]), release_x, double(x[id]), double(y[id]));
     out += line;
   }
