@@ -29,15 +29,22 @@ TravelStats travel_stats(const std::vector<double>& sorted) {
   return t;
 }
 
-double unit_spread(const std::vector<GrainRow>& rows) {
+struct UnitMoments {
+  double n = 0, mean = 0, spread = 0;  // grains, mean resting x, its standard deviation
+};
+
+std::map<int32_t, UnitMoments> unit_moments(const std::vector<GrainRow>& rows) {
   std::map<int32_t, std::array<double, 3>> sums;  // per unit: n, Σx, Σx²
   for (const GrainRow& r : rows) {
     auto& s = sums[r.unit];
     s[0] += 1, s[1] += r.x, s[2] += r.x * r.x;
   }
-  double weighted = 0;
-  for (auto& [unit, s] : sums) weighted += s[0] * std::sqrt(std::max(0.0, s[2] / s[0] - (s[1] / s[0]) * (s[1] / s[0])));
-  return weighted / double(rows.size());
+  std::map<int32_t, UnitMoments> m;
+  for (auto& [unit, s] : sums) {
+    const double mean = s[1] / s[0];
+    m[unit] = {s[0], mean, std::sqrt(std::max(0.0, s[2] / s[0] - mean * mean))};
+  }
+  return m;
 }
 
 }  // namespace
@@ -73,8 +80,17 @@ GrainComparison compare_grains(const std::vector<GrainRow>& a, const std::vector
     for (size_t i = 0; i < sa.size(); ++i) w += std::abs(sa[i] - sb[i]);
     c.travel_distance_px[size_t(k)] = sa.empty() ? 0 : w / double(sa.size());
   }
-  c.unit_spread_a_px = unit_spread(a);
-  c.unit_spread_b_px = unit_spread(b);
+  // Both tables hold the same grains, so the same units of the same sizes.
+  const auto ua = unit_moments(a), ub = unit_moments(b);
+  for (const auto& [unit, p] : ua) {
+    const UnitMoments& q = ub.at(unit);
+    c.unit_spread_a_px += p.n * p.spread, c.unit_spread_b_px += q.n * q.spread;
+    c.unit_centroid_distance_px += p.n * std::abs(p.mean - q.mean);
+    c.unit_spread_difference_px += p.n * std::abs(p.spread - q.spread);
+  }
+  if (!a.empty())
+    for (double* v : {&c.unit_spread_a_px, &c.unit_spread_b_px, &c.unit_centroid_distance_px, &c.unit_spread_difference_px})
+      *v /= double(a.size());
   c.grain_dx_px = c.same_release ? dx / double(a.size()) : NAN;
   c.grain_dy_px = c.same_release ? dy / double(a.size()) : NAN;
   return c;

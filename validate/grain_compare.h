@@ -30,6 +30,11 @@ struct GrainComparison {
   // Mean over grains of the standard deviation of their unit's resting x:
   // how widely a unit's sand spreads.
   double unit_spread_a_px = 0, unit_spread_b_px = 0;
+  // Per unit, grain-weighted means over the units: how far apart the two runs
+  // put a unit's sand (|Δ mean resting x|) and how differently widely they
+  // spread it (|Δ standard deviation|). A layout's units are the same in any
+  // physics seed, so these compare two DEM seeds too (their noise floor).
+  double unit_centroid_distance_px = 0, unit_spread_difference_px = 0;
   // Mean |Δx| and |Δy| of each grain between the runs; NaN unless same_release.
   double grain_dx_px = 0, grain_dy_px = 0;
 };

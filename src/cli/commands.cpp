@@ -399,6 +399,8 @@ struct CompareGrainsCommand {
       j["travel"].push_back(cls);
     }
     j["unit_spread_px"] = {{"a", c.unit_spread_a_px}, {"b", c.unit_spread_b_px}};
+    j["unit_centroid_distance_px"] = c.unit_centroid_distance_px;
+    j["unit_spread_difference_px"] = c.unit_spread_difference_px;
     auto number_or_null = [](double v) { return std::isfinite(v) ? ordered_json(v) : ordered_json(nullptr); };
     j["grain_distance_px"] = {{"x", number_or_null(c.grain_dx_px)}, {"y", number_or_null(c.grain_dy_px)}};
     if (as_json) {
@@ -418,6 +420,8 @@ struct CompareGrainsCommand {
                   tb.within_2px, c.travel_distance_px[size_t(k)]);
     }
     std::printf("unit spread (px)   a %.2f   b %.2f\n", c.unit_spread_a_px, c.unit_spread_b_px);
+    std::printf("units, a against b (px): centroid distance %.2f   spread difference %.2f\n",
+                c.unit_centroid_distance_px, c.unit_spread_difference_px);
     if (c.same_release) std::printf("grain distance (px)  x %.2f   y %.2f\n", c.grain_dx_px, c.grain_dy_px);
   }
 };

@@ -61,10 +61,18 @@ else bad "grain table: $(head -2 "$T/g1.csv"), $(wc -l <"$T/g1.csv") lines"; fi
 if cmp -s "$T/g1.png" "$T/a.png"; then ok; else bad "--grains changed the picture"; fi
 expect 0 "render grains other seed" -- "$BIN" render -o "$T/g2.png" --scale 0.25 --seed 7 --physics-seed 1 --grains "$T/g2.csv"
 expect 0 "compare-grains itself" -- "$BIN" compare-grains "$T/g1.csv" "$T/g1.csv" --json
-if grep -q '"same_release": true' "$T/out" && grep -q '"travel_distance_px": 0.0' "$T/out" && grep -q '"x": 0.0' "$T/out"; then ok
+if grep -q '"same_release": true' "$T/out" && grep -q '"travel_distance_px": 0.0' "$T/out" && grep -q '"x": 0.0' "$T/out" &&
+  grep -q '"unit_centroid_distance_px": 0.0' "$T/out" && grep -q '"unit_spread_difference_px": 0.0' "$T/out"; then ok
 else bad "compare-grains itself: $(head -c 600 "$T/out")"; fi
 expect 0 "compare-grains table" -- "$BIN" compare-grains "$T/g1.csv" "$T/g1.csv"
-if grep -q "unit spread" "$T/out" && grep -q "^S1 " "$T/out"; then ok; else bad "compare-grains table: $(cat "$T/out")"; fi
+if grep -q "unit spread" "$T/out" && grep -q "^S1 " "$T/out" && grep -q "centroid distance 0.00   spread difference 0.00" "$T/out"; then ok
+else bad "compare-grains table: $(cat "$T/out")"; fi
+# Another physics seed of the same layout: the same units, their sand a little elsewhere.
+expect 0 "render grains other physics seed" -- "$BIN" render -o "$T/gp.png" --scale 0.25 --physics-seed 2 --grains "$T/gp.csv"
+expect 0 "compare-grains other physics seed" -- "$BIN" compare-grains "$T/g1.csv" "$T/gp.csv" --json
+if grep -q '"same_release": false' "$T/out" && ! grep -q '"unit_centroid_distance_px": 0.0' "$T/out" &&
+  grep -q '"unit_centroid_distance_px"' "$T/out"; then ok
+else bad "compare-grains other physics seed: $(head -c 900 "$T/out")"; fi
 expect 2 "compare-grains other layout" -- "$BIN" compare-grains "$T/g1.csv" "$T/g2.csv"
 one_line; err_has "g2.csv"
 expect 2 "compare-grains not a table" -- "$BIN" compare-grains "$T/g1.csv" "$T/s.json"

@@ -62,6 +62,29 @@ TEST(GrainCompare, OtherReleasePointsCompareTravelButNotGrains) {
   EXPECT_DOUBLE_EQ(c.travel_distance_px[0], 0);
 }
 
+// Two units of five grains: b puts unit 1's sand 4 px further right and
+// spreads unit 0's over ±3 px where a stacks it on one point.
+TEST(GrainCompare, UnitsCompareByWhereAndHowWidelyTheirSandLies) {
+  std::vector<GrainRow> a, b;
+  const double b_unit0[] = {97, 103, 97, 103, 100};
+  for (int i = 0; i < 10; ++i) {
+    GrainRow r;
+    r.id = i, r.cls = 0, r.unit = i / 5, r.order = i, r.release_x = i < 5 ? 100 : 200, r.y = 50;
+    r.x = r.release_x;
+    a.push_back(r);
+    r.x = i < 5 ? b_unit0[i] : 204;
+    b.push_back(r);
+  }
+  const GrainComparison c = compare_grains(a, b, "a", "b");
+  EXPECT_DOUBLE_EQ(c.unit_centroid_distance_px, 2);  // (5 · 0 + 5 · 4) / 10
+  EXPECT_NEAR(c.unit_spread_difference_px, std::sqrt(7.2) / 2, 1e-12);  // unit 0: σ = √7.2, half the grains
+  EXPECT_DOUBLE_EQ(c.unit_spread_a_px, 0);
+  EXPECT_NEAR(c.unit_spread_b_px, std::sqrt(7.2) / 2, 1e-12);
+  const GrainComparison same = compare_grains(a, a, "a", "a");
+  EXPECT_DOUBLE_EQ(same.unit_centroid_distance_px, 0);
+  EXPECT_DOUBLE_EQ(same.unit_spread_difference_px, 0);
+}
+
 TEST(GrainCompare, TablesOfOtherScenesAreRefusedNamingTheFile) {
   const auto a = table({1, 2, 3});
   auto fewer = table({1, 2});
