@@ -165,16 +165,41 @@ double HeightField::deposit(int c, uint8_t cls, double area_px) {
   return base + rise / 2;
 }
 
-cv::Mat HeightField::class_map(int width, int height, uint8_t empty, double surface_px) const {
+cv::Mat HeightField::class_map(int width, int height, uint8_t empty, double surface_px,
+                               const std::vector<double>& share) const {
   cv::Mat map(height, width, CV_8U, cv::Scalar(empty));
   const double columns_per_px = 1.0 / width_;
+  // With shares, a mixed column's deposit tops are redrawn in proportion to
+  // rise · share, its top kept; without, they are the stack's own.
+  std::vector<std::vector<double>> redrawn(share.empty() ? 0 : static_cast<size_t>(columns_));
+  tbb::parallel_for(0, int(redrawn.size()), [&](int c) {
+    const std::vector<Deposit>& stack = stacks_[size_t(c)];
+    auto weight = [&](size_t k) { return stack[k].cls < share.size() ? share[stack[k].cls] : 1.0; };
+    bool mixed = false;
+    for (size_t k = 1; k < stack.size() && !mixed; ++k) mixed = weight(k) != weight(0);
+    if (!mixed) return;
+    std::vector<double>& t = redrawn[size_t(c)];
+    t.resize(stack.size());
+    double below = 0, sum = 0;
+    for (size_t k = 0; k < stack.size(); ++k) {
+      sum += (double(stack[k].top) - below) * weight(k);
+      below = stack[k].top;
+      t[k] = sum;
+    }
+    for (size_t k = 0; k + 1 < stack.size(); ++k) t[k] *= below / sum;
+    t.back() = below;
+  });
   tbb::parallel_for(0, width, [&](int x) {
     int c = std::min(columns() - 1, int((x + 0.5) * columns_per_px));
     const std::vector<Deposit>& stack = stacks_[size_t(c)];
+    const std::vector<double>* t = redrawn.empty() || redrawn[size_t(c)].empty() ? nullptr : &redrawn[size_t(c)];
     // The loose layer: tops above `from` drawn `stretch` times as far above it.
     const double top = this->height(c), loose = std::min(top, kLooseLayerPx);
     const double from = top - loose, stretch = loose > 0 ? (loose + surface_px) / loose : 1;
-    auto drawn_top = [&](size_t k) { return stack[k].top <= from ? double(stack[k].top) : from + (stack[k].top - from) * stretch; };
+    auto drawn_top = [&](size_t k) {
+      const double v = t ? (*t)[k] : double(stack[k].top);
+      return v <= from ? v : from + (v - from) * stretch;
+    };
     size_t k = 0;
     for (int i = 0; i < height; ++i) {  // pixel rows from the floor up
       double centre = i + 0.5;

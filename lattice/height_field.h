@@ -51,8 +51,14 @@ class HeightField {
   // (CV_8U, `empty` where no sand lies). `surface_px` > 0 draws each column's
   // top kLooseLayerPx of sand stretched by that much: the DEM's piles end in a
   // loose, rough layer about as thick at every pile size (lattice.surface_px).
+  // `share[cls]` (empty: all 1) redraws a column's deposits in proportion to
+  // rise · share, its top kept: the DEM's picture gives each pixel to the
+  // nearest grain centre, so where big and small grains mix a small grain
+  // shows larger than its area (lattice.picture_share). A column of one class
+  // is drawn as before.
   static constexpr double kLooseLayerPx = 10;
-  cv::Mat class_map(int width, int height, uint8_t empty, double surface_px = 0) const;
+  cv::Mat class_map(int width, int height, uint8_t empty, double surface_px = 0,
+                    const std::vector<double>& share = {}) const;
 
  private:
   static constexpr int kPad = kMaxWindow + 1;

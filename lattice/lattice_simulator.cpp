@@ -46,6 +46,13 @@ SlopeRule slope_rule(const Scene& s, int k) {
 
 namespace {
 
+// lattice.picture_share as the height field takes it: none when all are equal.
+std::vector<double> picture_shares(const Scene& s) {
+  const auto& w = s.lattice.picture_share;
+  if (std::all_of(w.begin(), w.end(), [&](double v) { return v == w[0]; })) return {};
+  return {w.begin(), w.end()};
+}
+
 double columns_per_px_of(const Scene& s, int columns) { return columns / double(s.window.width); }
 
 // paper Fig. 14c-d: the pile of the first `landed` grains, and the grains
@@ -53,7 +60,8 @@ double columns_per_px_of(const Scene& s, int columns) { return columns / double(
 // the region (those between are on their way down, not drawn).
 void emit_frame(const SimInput& in, const HeightField& field, int64_t landed, int64_t released,
                 FrameSchedule& schedule) {
-  cv::Mat map = field.class_map(in.scene.window.width, in.scene.window.height, kNoSand, in.scene.lattice.surface_px);
+  cv::Mat map = field.class_map(in.scene.window.width, in.scene.window.height, kNoSand, in.scene.lattice.surface_px,
+                                picture_shares(in.scene));
   draw_waiting(map, in.grains, std::span<const int32_t>(in.order.grain).subspan(size_t(released)));
   for (; schedule.due(landed); ++schedule.next) in.frames.frame(map);
 }
@@ -197,7 +205,7 @@ class LatticeSimulator final : public Simulator {
     }
     land_until(INFINITY);
     progress.finish();
-    out.class_map = field.class_map(W, H, kNoSand, s.lattice.surface_px);
+    out.class_map = field.class_map(W, H, kNoSand, s.lattice.surface_px, picture_shares(s));
     if (schedule.count > 0) in.frames.frame(out.class_map);  // the last frame is the picture
     out.stats["columns"] = columns;
     out.stats["pile_max_height_px"] = field.max_height();

@@ -581,6 +581,9 @@ std::vector<Field> make_fields() {
       real("lattice.spot_busy_s", [](S& s) -> double& { return s.lattice.spot_busy_s; }, 0, 10,
            "seconds a landing spot (a pixel column) stays busy after a grain lands on it; grains due there wait, "
            "as the DEM's insertion does (settling arrival only); 0: never"),
+      per_class("lattice.picture_share", [](S& s) -> auto& { return s.lattice.picture_share; }, 0.05, 20,
+                "where classes mix in a column, each is drawn in proportion to area · share, as the DEM's "
+                "nearest-grain picture shows small grains among big ones larger than their area (1: by area)"),
       text("lattice.calibration", [](S& s) -> auto& { return s.lattice.calibration; },
            "a file written by sandpic calibrate: its lattice values replace the scene's (lattice mode only)"),
       choice<LatticeArrival>("lattice.arrival", [](S& s) -> auto& { return s.lattice.arrival; },

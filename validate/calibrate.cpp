@@ -17,6 +17,7 @@
 #include "src/init/init.h"
 #include "src/pipeline.h"
 #include "src/segment/segment.h"
+#include "validate/compare.h"
 #include "validate/kept_runs.h"
 #include "validate/layer_bench.h"
 #include "validate/silhouette.h"
@@ -32,6 +33,7 @@ struct Target {
   Segmentation seg;
   FallingOrder order;
   std::vector<std::vector<double>> dem;  // silhouette per DEM physics seed
+  std::vector<cv::Mat> dem_maps;         // class map per DEM physics seed
 };
 
 // Classes with one diameter and density behave alike in the DEM: fitting
@@ -50,11 +52,19 @@ std::vector<std::vector<int>> physics_groups(const Scene& s) {
   return groups;
 }
 
+double mean_composition_error(const cv::Mat& a, const cv::Mat& b, int bands) {
+  const std::vector<double> e = composition_error(a, b, bands);
+  double sum = 0;
+  for (double v : e) sum += v;
+  return e.empty() ? 0 : sum / double(e.size());
+}
+
 struct Params {
   std::vector<double> angle, runout;  // per group
   double bulk = 1, surface = 0;
   double trap_rate = 0, trap_deg = 3;
   double spot_busy_s = 0;
+  std::vector<double> share;  // lattice.picture_share per group
 };
 
 class Fit {
@@ -72,19 +82,24 @@ class Fit {
     Eigen::VectorXd r(residual_count_);
     int i = 0;
     for (auto& t : targets_) {
-      Scene s = t.scene;
-      s.mode = Mode::Lattice;
-      apply(p, s);
-      Progress quiet(false);
-      SimResult out = lattice_.simulate(SimInput{s, t.init.grains, t.seg, t.order}, quiet);
-      ++runs_;
-      std::vector<double> h = silhouette(out.class_map);
+      std::vector<double> h = silhouette(lattice_map(p, t));
       for (auto& d : t.dem)
-        for (size_t c = 0; c < h.size(); ++c) r[i++] = (h[c] - d[c]) / s.window.height;
+        for (size_t c = 0; c < h.size(); ++c) r[i++] = (h[c] - d[c]) / t.scene.window.height;
     }
     return r;
   }
   double error(const Params& p) { return residuals(p).cwiseAbs().mean(); }
+
+  // Mean composition error (validate's), every scene against every DEM seed.
+  double composition(const Params& p, int bands) {
+    double sum = 0;
+    int n = 0;
+    for (auto& t : targets_) {
+      const cv::Mat map = lattice_map(p, t);
+      for (const cv::Mat& d : t.dem_maps) sum += mean_composition_error(map, d, bands), ++n;
+    }
+    return n ? sum / n : 0;
+  }
 
   void apply(const Params& p, Scene& s) const {
     std::array<double, kClasses> deg{};
@@ -96,6 +111,8 @@ class Fit {
     s.lattice.trap_rate = p.trap_rate;
     s.lattice.trap_deg = p.trap_deg;
     s.lattice.spot_busy_s = p.spot_busy_s;
+    for (size_t g = 0; g < groups_.size() && g < p.share.size(); ++g)
+      for (int k : groups_[g]) s.lattice.picture_share[size_t(k)] = p.share[g];
   }
 
  private:
@@ -103,6 +120,15 @@ class Fit {
   std::vector<std::vector<int>> groups_;
   Simulator& lattice_;
   int residual_count_ = 0;
+
+  cv::Mat lattice_map(const Params& p, const Target& t) {
+    Scene s = t.scene;
+    s.mode = Mode::Lattice;
+    apply(p, s);
+    Progress quiet(false);
+    ++runs_;
+    return lattice_.simulate(SimInput{s, t.init.grains, t.seg, t.order}, quiet).class_map;
+  }
   int64_t runs_ = 0;
 };
 
@@ -205,6 +231,37 @@ Params fit_runout(Fit& fit, Params p) {
   return p;
 }
 
+// The picture only: lattice.picture_share moves no grain and keeps every
+// column's top, so the silhouette fit stands and each group's share (the
+// first group's fixed at 1, only their ratio shows) is fitted to the
+// composition error alone: a log-spaced scan, then golden-section search
+// around its best.
+Params fit_shares(Fit& fit, Params p, int bands) {
+  for (size_t g = 1; g < p.share.size(); ++g) {
+    auto at = [&](double v) {
+      Params q = p;
+      q.share[g] = v;
+      return fit.composition(q, bands);
+    };
+    double best_v = p.share[g], best = at(best_v);
+    for (double v = 0.25; v <= 8.01; v *= std::pow(2.0, 0.25)) {
+      const double e = at(v);
+      if (e < best) best = e, best_v = v;
+    }
+    double lo = best_v / std::pow(2.0, 0.25), hi = best_v * std::pow(2.0, 0.25);
+    const double r = (std::sqrt(5.0) - 1) / 2;
+    double a = hi - r * (hi - lo), b = lo + r * (hi - lo), ea = at(a), eb = at(b);
+    for (int i = 0; i < 12; ++i) {
+      if (ea < eb) hi = b, b = a, eb = ea, a = hi - r * (hi - lo), ea = at(a);
+      else lo = a, a = b, ea = eb, b = lo + r * (hi - lo), eb = at(b);
+    }
+    for (auto [v, e] : {std::pair{a, ea}, {b, eb}})
+      if (e < best) best = e, best_v = v;
+    p.share[g] = std::clamp(best_v, 0.05, 20.0);
+  }
+  return p;
+}
+
 }  // namespace
 
 std::vector<Scene> calibration_scenes(const Scene& base, const CalibrateOptions& opt) {
@@ -278,11 +335,15 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   int floor_n = 0;
   for (size_t j = 0; j < jobs; ++j) {
     targets[j / per].dem[j % per] = silhouette(maps[j]);
+    targets[j / per].dem_maps.push_back(maps[j]);
     c.dem_s += seconds[j];
   }
   for (size_t t = 0; t < targets.size(); ++t) {
     for (size_t a = 0; a < per; ++a)
-      for (size_t b = a + 1; b < per; ++b) floor_sum += silhouette_error(maps[t * per + a], maps[t * per + b]), ++floor_n;
+      for (size_t b = a + 1; b < per; ++b) {
+        floor_sum += silhouette_error(maps[t * per + a], maps[t * per + b]), ++floor_n;
+        c.composition_floor += mean_composition_error(maps[t * per + a], maps[t * per + b], opt.bands);
+      }
     const Scene& s = targets[t].scene;
     const ordered_json init = to_json(s)["init"];  // the scene file's names
     c.scenes.push_back({{"layout_seed", s.layout()},
@@ -291,6 +352,7 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
                         {"grains", int64_t(targets[t].init.grains.size())}});
   }
   c.noise_floor = floor_n ? floor_sum / floor_n : 0;
+  c.composition_floor = floor_n ? c.composition_floor / floor_n : 0;
 
   Scene lattice_scene = base;
   lattice_scene.mode = Mode::Lattice;
@@ -301,6 +363,7 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   for (auto& g : c.groups) {
     p.angle.push_back(repose_angle_deg(base, g[0]));
     p.runout.push_back(base.lattice.runout_px[size_t(g[0])]);
+    p.share.push_back(base.lattice.picture_share[size_t(g[0])] / base.lattice.picture_share[size_t(c.groups[0][0])]);
   }
   p.bulk = base.lattice.bulk;
   p.surface = base.lattice.surface_px;
@@ -308,6 +371,7 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   p.trap_deg = base.lattice.trap_deg;
   p.spot_busy_s = base.lattice.spot_busy_s;
   c.error_before = fit.error(p);
+  c.composition_before = fit.composition(p, opt.bands);
   // Two pile sizes at least (their heights a quarter apart) tell the
   // surface layer from the bulk.
   double low = INFINITY, high = 0;
@@ -357,6 +421,10 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
     p = best;
   }
   c.error_after = fit.error(p);
+  if (opt.shares) p = fit_shares(fit, p, opt.bands);
+  c.composition_after = fit.composition(p, opt.bands);
+  log("composition error " + std::to_string(c.composition_before) + " before, " +
+      std::to_string(c.composition_after) + " after (DEM seed to seed " + std::to_string(c.composition_floor) + ")");
   Scene applied = base;
   fit.apply(p, applied);
   c.repose_deg = *applied.lattice.repose_deg;
@@ -366,6 +434,7 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   c.trap_rate = p.trap_rate;
   c.trap_deg = p.trap_deg;
   c.spot_busy_s = p.spot_busy_s;
+  c.picture_share = applied.lattice.picture_share;
   c.lattice_runs = fit.runs();
   return c;
 }
@@ -380,6 +449,7 @@ ordered_json calibration_json(const Scene& base, const Calibration& c) {
   j["lattice"]["trap_rate"] = c.trap_rate;
   j["lattice"]["trap_deg"] = c.trap_deg;
   j["lattice"]["spot_busy_s"] = c.spot_busy_s;
+  j["lattice"]["picture_share"] = c.picture_share;
   ordered_json& f = j["fit"];
   f["physics"] = {{"friction", base.physics.friction},
                   {"restitution", base.physics.restitution},
@@ -391,6 +461,9 @@ ordered_json calibration_json(const Scene& base, const Calibration& c) {
   f["silhouette_error_before"] = c.error_before;
   f["silhouette_error_after"] = c.error_after;
   f["dem_noise_floor"] = c.noise_floor;
+  f["composition_error_before"] = c.composition_before;
+  f["composition_error_after"] = c.composition_after;
+  f["dem_composition_floor"] = c.composition_floor;
   f["lattice_runs"] = c.lattice_runs;
   f["dem_simulate_s"] = c.dem_s;
   return j;

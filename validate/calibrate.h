@@ -31,6 +31,11 @@ struct CalibrateOptions {
   // busy outlet's grains queue as in the DEM): the whole fit once per
   // candidate, the best kept.
   bool spot = false;
+  // Also fit lattice.picture_share to the composition error over this many
+  // horizontal bands (validate's --bands), after everything else: it moves no
+  // grain and no column top. The composition error is reported either way.
+  bool shares = false;
+  int bands = 8;
 };
 
 // The scenes the fit runs on: the scene's physics (friction, restitution,
@@ -43,9 +48,12 @@ struct Calibration {
   double bulk = 1, surface_px = 0;
   double trap_rate = 0, trap_deg = 3;
   double spot_busy_s = 0;
+  std::array<double, kClasses> picture_share{1, 1, 1, 1};
   std::vector<std::vector<int>> groups;  // classes the DEM cannot tell apart share their values
   double error_before = 0, error_after = 0;  // mean silhouette error, lattice vs each DEM run
   double noise_floor = 0;                    // mean silhouette error between DEM seeds of one scene
+  // The same for the composition error, which lattice.picture_share is fitted to.
+  double composition_before = 0, composition_after = 0, composition_floor = 0;
   int64_t lattice_runs = 0;
   double dem_s = 0;  // simulate time of the DEM runs, summed
   ordered_json scenes = ordered_json::array();

@@ -116,6 +116,20 @@ std::vector<Job> lattice_sweep(const Scene& lat) {
   for (double f : {0.95, 1.05})
     add("lattice.bulk=" + g(eff.lattice.bulk * f), [&](Scene& s) { s.lattice.bulk *= f; });
   add("lattice.surface_px=" + g(eff.lattice.surface_px + 2), [&](Scene& s) { s.lattice.surface_px += 2; });
+  // The picture alone: the smaller grains drawn 1.5× their share where they
+  // mix with bigger ones, or every share back at 1 when they differ.
+  std::array<double, kClasses> share = eff.lattice.picture_share;
+  const auto& d = eff.grains.diameter_mm;
+  if (std::all_of(share.begin(), share.end(), [&](double v) { return v == share[0]; })) {
+    for (int k = 0; k < kClasses; ++k)
+      if (d[size_t(k)] < *std::max_element(d.begin(), d.end())) share[size_t(k)] *= 1.5;
+  } else {
+    share.fill(1);
+  }
+  std::string shares;
+  for (double v : share) shares += (shares.empty() ? "" : ",") + g(v);
+  if (share != eff.lattice.picture_share)
+    add("lattice.picture_share=" + shares, [share](Scene& s) { s.lattice.picture_share = share; });
   if (eff.lattice.arrival == LatticeArrival::Settling) {  // what landing in falling order would cost
     add("lattice.arrival=release", [](Scene& s) { s.lattice.arrival = LatticeArrival::Release; });
     // Busy landing spots off, or on at the value the DEM's outlets took at 20,000 grains.

@@ -122,6 +122,8 @@ struct CalibrateCommand {
   int scenes = 3;
   bool trap = false;
   bool spot = false;
+  bool shares = false;
+  int bands = 8;
 
   void add_to(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
@@ -142,12 +144,19 @@ struct CalibrateCommand {
     cmd->add_flag("--spot", spot,
                   "also fit lattice.spot_busy_s (a busy outlet's grains queue and land mixed, as in the DEM): the fit "
                   "runs once per candidate of a small grid");
+    cmd->add_flag("--shares", shares,
+                  "also fit lattice.picture_share (small grains drawn larger where they mix with big ones, as the DEM's "
+                  "nearest-grain picture shows them) to the composition error; moves no grain");
+    cmd->add_option("--bands", bands, "horizontal bands of the composition error (reported, and fitted with --shares)")
+        ->capture_default_str()->check(CLI::Range(1, 100000));
     cmd->callback([this] { run(); });
   }
 
   void run() {
     Scene s = scene.build();
     CalibrateOptions opt;
+    opt.bands = bands;
+    opt.shares = shares;
     opt.trap = trap;
     opt.spot = spot;
     opt.grains = list_option<int64_t>("--grains", grains, [](const std::string& i) {
@@ -171,6 +180,9 @@ struct CalibrateCommand {
                 c.runout_px[2], c.runout_px[3], c.bulk, c.surface_px, c.trap_rate, c.trap_deg, c.spot_busy_s);
     std::printf("silhouette error on the calibration scenes: %.5f before, %.5f after (DEM seed to seed %.5f)\n",
                 c.error_before, c.error_after, c.noise_floor);
+    std::printf("picture_share %.3f %.3f %.3f %.3f: composition error %.5f before, %.5f after (DEM seed to seed %.5f)\n",
+                c.picture_share[0], c.picture_share[1], c.picture_share[2], c.picture_share[3], c.composition_before,
+                c.composition_after, c.composition_floor);
   }
 };
 

@@ -194,6 +194,11 @@ if [ "$BULLET" = with-bullet ]; then
   # --spot also fits how long a landing spot stays busy (reusing the kept piles).
   expect 0 "calibrate spot" -- "$BIN" calibrate "${TINY[@]}" --grains 300,700 --scenes 1 --runs "$T/calruns" --spot --out "$T/cal4.json"
   if grep -q '"spot_busy_s"' "$T/cal4.json" && grep -q "spot_busy_s" "$T/out"; then ok; else bad "cal4: $(cat "$T/cal4.json")"; fi
+  # --shares also fits how much of the picture small grains take where they mix (lattice.picture_share).
+  expect 0 "calibrate shares" -- "$BIN" calibrate "${TINY[@]}" --grains 300,700 --scenes 1 --runs "$T/calruns" --shares --out "$T/cal5.json"
+  # (Recovering a known share is CalibrateFit.PictureSharesAreFittedToTheComposition's job.)
+  if grep -Eq "^picture_share 1\.000 1\.000 ([0-9.]+) \1: composition error" "$T/out" &&
+     grep -q '"picture_share"' "$T/cal5.json" && grep -q '"dem_composition_floor"' "$T/cal5.json"; then ok; else bad "cal5: $(cat "$T/out")"; fi
   expect 2 "calibrate bad size list" -- "$BIN" calibrate --grains 8000,x --out "$T/c3.json"
   one_line; err_has "--grains"; absent "$T/c3.json"
   expect 2 "validate few seeds" -- "$BIN" validate "${TINY[@]}" --seeds 3 --out "$T/val"
@@ -222,6 +227,13 @@ expect 0 "busy spots" -- "$BIN" render --scale 0.2 --set lattice.spot_busy_s=0.0
 if grep -Eq '"grains_waited": [1-9]' "$T/spot.json"; then ok; else bad "spot stats: $(grep -o '"grains_waited": [0-9]*' "$T/spot.json")"; fi
 expect 2 "negative spot time" -- "$BIN" render -o "$T/e.png" --set lattice.spot_busy_s=-1
 one_line; err_has "lattice.spot_busy_s"; absent "$T/e.png"
+# lattice.picture_share redraws mixed columns only: the silhouette stays, the small classes show more.
+expect 0 "picture shares" -- "$BIN" render --scale 0.2 --set 'lattice.picture_share=[1,1,2,2]' -o "$T/share.png"
+expect 0 "picture shares off" -- "$BIN" render --scale 0.2 -o "$T/noshare.png"
+expect 0 "picture shares compared" -- "$BIN" compare "$T/noshare.png" "$T/share.png" --json
+if grep -q '"silhouette_error": 0\.0,' "$T/out" && ! grep -q '"composition_error": 0\.0,' "$T/out"; then ok; else bad "picture shares: $(cat "$T/out")"; fi
+expect 2 "bad picture share" -- "$BIN" render -o "$T/e.png" --set 'lattice.picture_share=[1,1,0,1]'
+one_line; err_has "lattice.picture_share"; absent "$T/e.png"
 
 # paper §5.2: a sketch drawn as a picture, painted over, read back as the sketch.
 expect 0 "sketch" -- "$BIN" sketch "$ROOT/examples/fig07.json" -o "$T/sketch.png"

@@ -108,5 +108,35 @@ TEST(HeightField, ClassMapShowsDepositsInOrder) {
   EXPECT_EQ(f.room_near(0, 8), 1);
 }
 
+// lattice.picture_share: where classes mix in a column their deposits are
+// drawn in proportion to rise · share with the column's top kept; a column
+// of one class, or equal shares, draws as before.
+TEST(HeightField, PictureSharesRedrawMixedColumnsAndKeepTheirTops) {
+  HeightField f(2, 1.0, 20, {rule_for(80)});
+  f.deposit(0, 0, 6.0);  // a big grain's 6 px, then a small one's 2 px: 8 px
+  f.deposit(0, 2, 2.0);
+  f.deposit(1, 0, 3.0);  // one class only
+  f.deposit(1, 1, 3.0);
+  auto count = [](const cv::Mat& m, int x, uint8_t cls) {
+    int n = 0;
+    for (int y = 0; y < m.rows; ++y) n += m.at<uint8_t>(y, x) == cls;
+    return n;
+  };
+  const cv::Mat plain = f.class_map(2, 10, 255);
+  EXPECT_EQ(count(plain, 0, 0), 6);
+  EXPECT_EQ(count(plain, 0, 2), 2);
+  // Share 3 for the small class: 6·1 : 2·3, so 4 px each of the 8.
+  const std::vector<double> share = {1, 1, 3, 3};
+  const cv::Mat shared = f.class_map(2, 10, 255, 0, share);
+  EXPECT_EQ(count(shared, 0, 0), 4);
+  EXPECT_EQ(count(shared, 0, 2), 4);
+  EXPECT_EQ(count(shared, 0, 255), 2);  // the top stays at 8 px
+  EXPECT_EQ(shared.at<uint8_t>(9, 0), 0);  // the order stays: big below
+  EXPECT_EQ(shared.at<uint8_t>(2, 0), 2);
+  // Column 1 holds classes 0 and 1, one share: drawn as before.
+  EXPECT_EQ(cv::norm(shared.col(1), plain.col(1), cv::NORM_INF), 0);
+  EXPECT_EQ(cv::norm(f.class_map(2, 10, 255, 0, {2, 2, 2, 2}), plain, cv::NORM_INF), 0);
+}
+
 }  // namespace
 }  // namespace sandpic

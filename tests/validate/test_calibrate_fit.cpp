@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 
 #include "lattice/lattice_simulator.h"
 #include "validate/calibrate.h"
@@ -10,28 +11,37 @@
 namespace sandpic {
 namespace {
 
-// The lattice with a denser-looking bulk and a surface layer: what the fit
-// should recover.
-class Truth final : public Simulator {
+// A lattice whose scene `change` alters stands in for the DEM: the values
+// the fit should recover.
+class StandIn final : public Simulator {
  public:
+  explicit StandIn(std::function<void(Scene&)> change) : change_(std::move(change)) {}
   Cost cost(const Scene& s) const override { return lattice_->cost(s); }
   SimResult simulate(const SimInput& in, Progress& progress) override {
     Scene s = in.scene;
-    s.lattice.bulk = 1.08;
-    s.lattice.surface_px = 3;
+    change_(s);
     SimInput changed{s, in.grains, in.seg, in.order};
     return lattice_->simulate(changed, progress);
   }
 
  private:
+  std::function<void(Scene&)> change_;
   std::unique_ptr<Simulator> lattice_ = make_lattice_simulator();
 };
 
-SimulatorFactory truth_for_dem() {
-  return [](const Scene& s) -> std::unique_ptr<Simulator> {
-    if (s.mode == Mode::Dem) return std::make_unique<Truth>();
+SimulatorFactory dem_as(std::function<void(Scene&)> change) {
+  return [change](const Scene& s) -> std::unique_ptr<Simulator> {
+    if (s.mode == Mode::Dem) return std::make_unique<StandIn>(change);
     return make_lattice_simulator();
   };
+}
+
+// A denser-looking bulk and a surface layer.
+SimulatorFactory truth_for_dem() {
+  return dem_as([](Scene& s) {
+    s.lattice.bulk = 1.08;
+    s.lattice.surface_px = 3;
+  });
 }
 
 // Two pile sizes tell a surface layer from the bulk; one size cannot, so
@@ -60,24 +70,10 @@ TEST(CalibrateFit, TwoSizesRecoverTheBulkAndTheSurfaceLayer) {
 // another order; calibrate --spot must find the time again among its grid,
 // the other rule values refitted for each candidate.
 TEST(CalibrateFit, SpotFindsTheBusyTimeOfAQueuingTruth) {
-  class Queuing final : public Simulator {
-   public:
-    Cost cost(const Scene& s) const override { return lattice_->cost(s); }
-    SimResult simulate(const SimInput& in, Progress& progress) override {
-      Scene s = in.scene;
-      s.lattice = Scene{}.lattice;  // the default rule values
-      s.lattice.spot_busy_s = 0.008;
-      SimInput changed{s, in.grains, in.seg, in.order};
-      return lattice_->simulate(changed, progress);
-    }
-
-   private:
-    std::unique_ptr<Simulator> lattice_ = make_lattice_simulator();
-  };
-  SimulatorFactory make = [](const Scene& s) -> std::unique_ptr<Simulator> {
-    if (s.mode == Mode::Dem) return std::make_unique<Queuing>();
-    return make_lattice_simulator();
-  };
+  SimulatorFactory make = dem_as([](Scene& s) {
+    s.lattice = Scene{}.lattice;  // the default rule values
+    s.lattice.spot_busy_s = 0.008;
+  });
   Scene base;
   CalibrateOptions opt;
   opt.grains = {3000};
@@ -90,6 +86,39 @@ TEST(CalibrateFit, SpotFindsTheBusyTimeOfAQueuingTruth) {
   EXPECT_GT(c.error_before, 0.001);
   EXPECT_LT(c.error_after, 0.5 * c.error_before);
   EXPECT_EQ(calibration_json(base, c)["lattice"]["spot_busy_s"].get<double>(), 0.008);
+}
+
+// A "DEM" whose picture shows small grains at twice their area where they
+// mix with big ones (lattice.picture_share 2): the shares are fitted to the
+// composition error and found again; the silhouette fit does not see them.
+TEST(CalibrateFit, PictureSharesAreFittedToTheComposition) {
+  SimulatorFactory make = dem_as([](Scene& s) {
+    s.lattice = Scene{}.lattice;
+    s.lattice.picture_share = {1, 1, 2, 2};
+  });
+  Scene base;
+  CalibrateOptions opt;
+  opt.grains = {3000};
+  opt.scenes = 1;
+  Calibration off = calibrate(base, opt, make, [](const std::string&) {});
+  EXPECT_EQ(off.picture_share[2], 1);  // fitted only when asked
+  opt.shares = true;
+  Calibration c = calibrate(base, opt, make, [](const std::string&) {});
+  EXPECT_EQ(c.composition_before, off.composition_before);
+  std::printf("picture shares %.3f %.3f %.3f %.3f, composition %.5f -> %.5f, silhouette %.5f -> %.5f\n",
+              c.picture_share[0], c.picture_share[1], c.picture_share[2], c.picture_share[3], c.composition_before,
+              c.composition_after, c.error_before, c.error_after);
+  EXPECT_EQ(c.picture_share[0], 1);
+  EXPECT_EQ(c.picture_share[1], 1);
+  EXPECT_NEAR(c.picture_share[2], 2, 0.2);
+  EXPECT_EQ(c.picture_share[3], c.picture_share[2]);  // one group: S3 and S4 share a diameter and density
+  EXPECT_GT(c.composition_before, 0.002);
+  EXPECT_LT(c.composition_after, 0.25 * c.composition_before);
+  EXPECT_LT(c.composition_after, 0.25 * off.composition_after);  // the rule values alone do not do it
+  EXPECT_GT(c.composition_floor, 0);  // two physics seeds of the stand-in differ
+  const ordered_json j = calibration_json(base, c);
+  EXPECT_NEAR(j["lattice"]["picture_share"][2].get<double>(), c.picture_share[2], 1e-12);
+  EXPECT_TRUE(j["fit"].contains("dem_composition_floor"));
 }
 
 // --runs: the "DEM" piles are kept and the second calibration reads them

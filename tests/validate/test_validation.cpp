@@ -73,6 +73,7 @@ TEST(Validation, RunsTheEnsembleKeepsItAndReportsEveryMetric) {
   EXPECT_TRUE(swept("lattice.arrival=release"));
   EXPECT_TRUE(swept("lattice.surface_px=2"));
   EXPECT_TRUE(swept("lattice.spot_busy_s=0.01"));
+  EXPECT_TRUE(swept("lattice.picture_share=1,1,1.5,1.5"));
   EXPECT_FALSE(v.heat_map.empty());
   for (const ValidationRun& d : v.dem) EXPECT_FALSE(d.cached);
 
