@@ -52,13 +52,6 @@ std::vector<std::vector<int>> physics_groups(const Scene& s) {
   return groups;
 }
 
-double mean_composition_error(const cv::Mat& a, const cv::Mat& b, int bands) {
-  const std::vector<double> e = composition_error(a, b, bands);
-  double sum = 0;
-  for (double v : e) sum += v;
-  return e.empty() ? 0 : sum / double(e.size());
-}
-
 struct Params {
   std::vector<double> angle, runout;  // per group
   double bulk = 1, surface = 0;
@@ -96,7 +89,7 @@ class Fit {
     int n = 0;
     for (auto& t : targets_) {
       const cv::Mat map = lattice_map(p, t);
-      for (const cv::Mat& d : t.dem_maps) sum += mean_composition_error(map, d, bands), ++n;
+      for (const cv::Mat& d : t.dem_maps) sum += mean_composition_error(composition_error(map, d, bands)), ++n;
     }
     return n ? sum / n : 0;
   }
@@ -116,11 +109,7 @@ class Fit {
   }
 
  private:
-  std::vector<Target>& targets_;
-  std::vector<std::vector<int>> groups_;
-  Simulator& lattice_;
-  int residual_count_ = 0;
-
+  // One lattice run of a calibration scene with the values p.
   cv::Mat lattice_map(const Params& p, const Target& t) {
     Scene s = t.scene;
     s.mode = Mode::Lattice;
@@ -129,6 +118,11 @@ class Fit {
     ++runs_;
     return lattice_.simulate(SimInput{s, t.init.grains, t.seg, t.order}, quiet).class_map;
   }
+
+  std::vector<Target>& targets_;
+  std::vector<std::vector<int>> groups_;
+  Simulator& lattice_;
+  int residual_count_ = 0;
   int64_t runs_ = 0;
 };
 
@@ -342,7 +336,7 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
     for (size_t a = 0; a < per; ++a)
       for (size_t b = a + 1; b < per; ++b) {
         floor_sum += silhouette_error(maps[t * per + a], maps[t * per + b]), ++floor_n;
-        c.composition_floor += mean_composition_error(maps[t * per + a], maps[t * per + b], opt.bands);
+        c.composition_floor += mean_composition_error(composition_error(maps[t * per + a], maps[t * per + b], opt.bands));
       }
     const Scene& s = targets[t].scene;
     const ordered_json init = to_json(s)["init"];  // the scene file's names

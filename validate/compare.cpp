@@ -109,6 +109,12 @@ std::vector<double> composition_error(const cv::Mat& a, const cv::Mat& b, int ba
   return err;
 }
 
+double mean_composition_error(const std::vector<double>& per_band) {
+  double sum = 0;
+  for (double e : per_band) sum += e;
+  return per_band.empty() ? 0 : sum / double(per_band.size());
+}
+
 Comparison compare_pictures(const cv::Mat& a, const cv::Mat& b, const std::array<Rgb, kClasses>& colours, int bands,
                             double blur_sigma_px) {
   CV_Assert(a.size() == b.size());
@@ -120,9 +126,7 @@ Comparison compare_pictures(const cv::Mat& a, const cv::Mat& b, const std::array
   const cv::Mat ka = decode_classes(a, colours), kb = decode_classes(b, colours);
   c.silhouette_error = silhouette_error(ka, kb);
   c.composition = composition_error(ka, kb, bands);
-  double sum = 0;
-  for (double e : c.composition) sum += e;
-  c.composition_error = sum / double(c.composition.size());
+  c.composition_error = mean_composition_error(c.composition);
   c.blur_sigma_px = blur_sigma_px;
   c.ssim_blurred = blur_sigma_px > 0 ? ssim(gaussian(ya, blur_sigma_px, 4), gaussian(yb, blur_sigma_px, 4)) : c.ssim;
   return c;

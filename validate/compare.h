@@ -37,6 +37,8 @@ cv::Mat decode_classes(const cv::Mat& bgr, const std::array<Rgb, kClasses>& colo
 // of the band's pixels held by each class and by no sand (0: the same mix,
 // 1: nothing in common).
 std::vector<double> composition_error(const cv::Mat& classes_a, const cv::Mat& classes_b, int bands);
+// Its mean over the bands (Comparison::composition_error).
+double mean_composition_error(const std::vector<double>& per_band);
 
 struct Comparison {
   int width = 0, height = 0;
