@@ -83,6 +83,24 @@ ValidationRun run_lattice(const Job& j, const ValidateOptions& opt, const Simula
   return r;
 }
 
+// The lattice at the next opt.lattice_seeds − 1 physics seeds after the
+// job's own (untimed: one run each), to score it over several seeds.
+std::vector<ValidationRun> more_seeds(const Job& j, const ValidateOptions& opt, const SimulatorFactory& make) {
+  std::vector<ValidationRun> runs;
+  auto sim = make(j.scene);
+  for (int i = 1; i < opt.lattice_seeds; ++i) {
+    Job k = j;
+    k.label = j.label + "-seed-" + std::to_string(j.scene.physics_rng() + uint64_t(i));
+    k.scene.physics_seed = j.scene.physics_rng() + uint64_t(i);
+    ValidationRun r = describe(k);
+    RunResult out = run_pipeline(k.scene, *sim, RunOptions{});
+    r.picture = out.picture, r.grains = out.stats["grains"]["total"].get<int64_t>();
+    r.simulate_s = out.stats["timing"]["simulate_s"].get<double>();
+    runs.push_back(std::move(r));
+  }
+  return runs;
+}
+
 std::string g(double v) { return num("%g", v); }
 
 // A sweep point: `base` with one setting changed by `change`.
@@ -207,6 +225,8 @@ Comparison mean_comparison(const std::vector<Comparison>& all) {
 void check_options(const ValidateOptions& opt) {
   if (opt.extra_seeds < 4)
     throw InputError("--seeds must be at least 4: the noise floor is the mean over five or more DEM runs");
+  if (opt.lattice_seeds < 1 || opt.lattice_seeds > 1000)
+    throw InputError("--lattice-seeds must be 1 to 1000: the lattice is scored at that many physics seeds");
 }
 
 Validation run_validation(const Scene& base, const ValidateOptions& opt, const SimulatorFactory& make,
@@ -247,33 +267,49 @@ Validation run_validation(const Scene& base, const ValidateOptions& opt, const S
   });
   v.dem.assign(done.begin(), done.begin() + long(ensemble));
   for (size_t i = ensemble; i < done.size(); ++i) v.sweep.push_back(done[i]);
-  if (opt.sweep_lattice)
-    for (Job& j : lattice_sweep(lat)) v.sweep.push_back(run_lattice(j, opt, make));
-
-  // Every comparison is against every DEM run of the ensemble.
+  // Every comparison is against every DEM run of the ensemble; a lattice
+  // scored at several seeds is the mean over every seed and DEM run.
   const auto& colours = base.grains.colors;
-  auto against_dem = [&](ValidationRun& r) {
+  auto compare = [&](const ValidationRun& a, const ValidationRun& b) {
+    return compare_pictures(a.picture, b.picture, colours, opt.bands, opt.blur_sigma_px);
+  };
+  auto against_dem = [&](ValidationRun& r, const std::vector<ValidationRun>& more) {
     if (!r.skipped.empty()) return;
     std::vector<Comparison> c;
-    for (auto& d : v.dem) c.push_back(compare_pictures(r.picture, d.picture, colours, opt.bands, opt.blur_sigma_px));
+    for (auto& d : v.dem) c.push_back(compare(r, d));
+    for (auto& l : more)
+      for (auto& d : v.dem) c.push_back(compare(l, d));
     r.mean = mean_comparison(c);
   };
-  against_dem(v.lattice);
-  for (auto& r : v.sweep) against_dem(r);
-  std::vector<Comparison> pairs;
+  v.lattice_seeds = more_seeds(Job{"lattice", "lattice", "", lat, ""}, opt, make);
+  against_dem(v.lattice, v.lattice_seeds);
+  if (opt.sweep_lattice)
+    for (Job& j : lattice_sweep(lat)) {
+      v.sweep.push_back(run_lattice(j, opt, make));
+      if (v.sweep.back().skipped.empty()) against_dem(v.sweep.back(), more_seeds(j, opt, make));
+    }
+  for (auto& r : v.sweep)
+    if (r.group == "sweep-dem") against_dem(r, {});
+  std::vector<Comparison> pairs, spread;
   for (size_t a = 0; a < v.dem.size(); ++a)
-    for (size_t b = a + 1; b < v.dem.size(); ++b)
-      pairs.push_back(compare_pictures(v.dem[a].picture, v.dem[b].picture, colours, opt.bands, opt.blur_sigma_px));
-  const Comparison floor = mean_comparison(pairs), &l = v.lattice.mean;
+    for (size_t b = a + 1; b < v.dem.size(); ++b) pairs.push_back(compare(v.dem[a], v.dem[b]));
+  std::vector<const ValidationRun*> lats{&v.lattice};
+  for (auto& r : v.lattice_seeds) lats.push_back(&r);
+  for (size_t a = 0; a < lats.size(); ++a)
+    for (size_t b = a + 1; b < lats.size(); ++b) spread.push_back(compare(*lats[a], *lats[b]));
+  const Comparison floor = mean_comparison(pairs), &l = v.lattice.mean, sp = mean_comparison(spread);
+  const double none = spread.empty() ? NAN : 0;  // NaN: one lattice seed has no spread
   auto ratio = [](double a, double b) { return b > 0 ? a / b : a > 0 ? INFINITY : 1.0; };
   v.metrics = {
-      {"silhouette_error", l.silhouette_error, floor.silhouette_error, ratio(l.silhouette_error, floor.silhouette_error)},
+      {"silhouette_error", l.silhouette_error, floor.silhouette_error, ratio(l.silhouette_error, floor.silhouette_error),
+       none + sp.silhouette_error},
       {"composition_error", l.composition_error, floor.composition_error,
-       ratio(l.composition_error, floor.composition_error)},
-      {"ssim", l.ssim, floor.ssim, ratio(1 - l.ssim, 1 - floor.ssim)},
-      {"ssim_blurred", l.ssim_blurred, floor.ssim_blurred, ratio(1 - l.ssim_blurred, 1 - floor.ssim_blurred)},
+       ratio(l.composition_error, floor.composition_error), none + sp.composition_error},
+      {"ssim", l.ssim, floor.ssim, ratio(1 - l.ssim, 1 - floor.ssim), none + sp.ssim},
+      {"ssim_blurred", l.ssim_blurred, floor.ssim_blurred, ratio(1 - l.ssim_blurred, 1 - floor.ssim_blurred),
+       none + sp.ssim_blurred},
       {"psnr_db", l.psnr_db, floor.psnr_db,
-       std::isfinite(floor.psnr_db) ? std::pow(10.0, (floor.psnr_db - l.psnr_db) / 10) : INFINITY},
+       std::isfinite(floor.psnr_db) ? std::pow(10.0, (floor.psnr_db - l.psnr_db) / 10) : INFINITY, none + sp.psnr_db},
   };
   std::vector<double> dem_t;
   int cached = 0;
@@ -301,13 +337,20 @@ ordered_json validation_json(const Validation& v, const std::string& reproduce) 
   ordered_json& h = j["headline"];
   for (const MetricRow& m : v.metrics) h[m.name + "_ratio"] = finite(m.ratio);
   h["time_ratio"] = finite(v.time_ratio);
+  h["lattice_seeds"] = 1 + v.lattice_seeds.size();
   h["lattice_simulate_s"] = v.lattice_s;
   h["dem_simulate_s"] = v.dem_s;
   j["metrics"] = ordered_json::array();
   for (const MetricRow& m : v.metrics)
-    j["metrics"].push_back({{"name", m.name}, {"lattice", finite(m.lattice)}, {"noise_floor", finite(m.floor)},
-                            {"ratio", finite(m.ratio)}});
-  j["metrics_note"] = "ratio: lattice-vs-DEM error over DEM-vs-DEM error (1 - SSIM for the SSIMs, MSE for PSNR)";
+  {
+    ordered_json row = {{"name", m.name}, {"lattice", finite(m.lattice)}, {"noise_floor", finite(m.floor)},
+                        {"ratio", finite(m.ratio)}};
+    if (!std::isnan(m.spread)) row["lattice_seed_to_seed"] = finite(m.spread);
+    j["metrics"].push_back(row);
+  }
+  j["metrics_note"] = "ratio: lattice-vs-DEM error over DEM-vs-DEM error (1 - SSIM for the SSIMs, MSE for PSNR); "
+                      "lattice: the mean over every lattice seed and DEM run; lattice_seed_to_seed: the mean over "
+                      "pairs of lattice seeds (with --lattice-seeds 2 or more)";
   auto run = [](const ValidationRun& r) {
     ordered_json o = {{"label", r.label},   {"group", r.group},           {"setting", r.setting},
                       {"physics_seed", r.physics_seed}, {"simulate_s", finite(r.simulate_s)}, {"cached", r.cached}};
@@ -323,6 +366,7 @@ ordered_json validation_json(const Validation& v, const std::string& reproduce) 
   };
   j["runs"] = ordered_json::array();
   j["runs"].push_back(run(v.lattice));
+  for (auto& l : v.lattice_seeds) j["runs"].push_back(run(l));
   for (auto& d : v.dem) j["runs"].push_back(run(d));
   j["sweep"] = ordered_json::array();
   for (auto& s : v.sweep) j["sweep"].push_back(run(s));

@@ -4,6 +4,7 @@
 // two equally valid physical results differ. Every metric of compare, the
 // lattice's error over that floor, and error against run time for a sweep
 // of settings of both modes.
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -24,6 +25,7 @@ struct ValidateOptions {
   int bands = 8;
   double blur_sigma_px = 3;
   int lattice_timing_runs = 7;                 // the lattice's time is the median of this many runs
+  int lattice_seeds = 1;                       // lattice physics seeds scored: the scene's, then the next ones
   std::string cache_dir;                       // DEM runs kept here (PNG + stats) and reused while their digest holds
 };
 
@@ -44,11 +46,13 @@ struct MetricRow {
   std::string name;
   double lattice = 0, floor = 0;  // the metric itself: lattice vs DEM runs, DEM vs DEM
   double ratio = 0;               // lattice's error over the floor's
+  double spread = NAN;            // the metric between lattice seeds (NaN with one seed)
 };
 
 struct Validation {
   Scene scene;
-  ValidationRun lattice;
+  ValidationRun lattice;              // at the scene's physics seed (timed, pictured)
+  std::vector<ValidationRun> lattice_seeds;  // at the next --lattice-seeds − 1 seeds (scored with it)
   std::vector<ValidationRun> dem;     // [0] the scene's physics seed, then the extra seeds
   std::vector<ValidationRun> sweep;
   std::vector<MetricRow> metrics;
@@ -58,7 +62,8 @@ struct Validation {
   std::vector<std::string> notes;
 };
 
-// Throws InputError for options no run can take (fewer than five DEM runs).
+// Throws InputError for options no run can take (fewer than five DEM runs,
+// no lattice seed).
 void check_options(const ValidateOptions& opt);
 // Checks the options first; a build without Bullet fails at the first DEM run
 // (the CLI says so before any work).

@@ -40,7 +40,7 @@ std::function<void(const std::string&)> logger(const char* command) {
 struct ValidateCommand {
   SceneOptions scene;
   std::string out, sweep = "lattice,dem", calibration, runs;
-  int seeds = 4, bands = 8;
+  int seeds = 4, bands = 8, lattice_seeds = 1;
   double blur = 3;
   int64_t all_dynamic_max = 5000;
 
@@ -51,6 +51,10 @@ struct ValidateCommand {
     cmd->add_option("--out", out, "folder for report.html, report.json and the pictures (DEM runs are kept in "
                                   "OUT/runs and reused while the scene is unchanged)")->required();
     cmd->add_option("--seeds", seeds, "DEM runs beyond the scene's physics seed (at least 4)")->capture_default_str();
+    cmd->add_option("--lattice-seeds", lattice_seeds,
+                    "score the lattice at this many physics seeds (the scene's, then the next ones): its figures "
+                    "are means over them, and the report gives their seed-to-seed spread")
+        ->capture_default_str();
     cmd->add_option("--runs", runs, "keep the DEM runs in this folder instead of OUT/runs (a folder shared by "
                                     "several reports; a run is reused while its scene digest holds)");
     cmd->add_option("--sweep", sweep, "settings swept for error against time: lattice, dem, both or none")
@@ -67,6 +71,7 @@ struct ValidateCommand {
     Scene s = scene.build();
     ValidateOptions opt;
     opt.extra_seeds = seeds;
+    opt.lattice_seeds = lattice_seeds;
     check_options(opt);  // before the folder is made
     opt.sweep_lattice = opt.sweep_dem = false;
     for (const std::string& item : list_option<std::string>("--sweep", sweep, [this](const std::string& i) {
@@ -96,7 +101,8 @@ struct ValidateCommand {
     auto threads = limit_threads(scene.threads);
     const std::string reproduce = "sandpic validate: " + scene.reproduce(s) +
                                   (scene.scale != 1 ? ", --scale " + std::to_string(scene.scale) : std::string()) +
-                                  (calibration.empty() ? std::string() : ", --calibration " + calibration);
+                                  (calibration.empty() ? std::string() : ", --calibration " + calibration) +
+                                  (lattice_seeds > 1 ? ", --lattice-seeds " + std::to_string(lattice_seeds) : std::string());
     Validation v;
     try {
       v = run_validation(s, opt, make_any, logger("validate"));
@@ -108,8 +114,14 @@ struct ValidateCommand {
     write_atomic(out + "/report.json", validation_json(v, reproduce).dump(2) + "\n");
     write_atomic(out + "/report.html", validation_html(v, reproduce));
     std::printf("sandpic validate: %lld grains, %zu DEM runs\n", (long long)v.lattice.grains, v.dem.size());
-    std::printf("%-18s %12s %12s %8s\n", "metric", "lattice", "noise_floor", "ratio");
-    for (const MetricRow& m : v.metrics) std::printf("%-18s %12.5f %12.5f %8.3f\n", m.name.c_str(), m.lattice, m.floor, m.ratio);
+    const bool spread = !v.lattice_seeds.empty();
+    if (spread) std::printf("lattice: means over %zu physics seeds\n", 1 + v.lattice_seeds.size());
+    std::printf("%-18s %12s %12s %8s%s\n", "metric", "lattice", "noise_floor", "ratio", spread ? "  lattice_seed_to_seed" : "");
+    for (const MetricRow& m : v.metrics) {
+      std::printf("%-18s %12.5f %12.5f %8.3f", m.name.c_str(), m.lattice, m.floor, m.ratio);
+      if (spread) std::printf("  %20.5f", m.spread);
+      std::printf("\n");
+    }
     std::printf("time: lattice %.4g s, DEM %.4g s (medians of simulate_s), ratio %.0f\n", v.lattice_s, v.dem_s,
                 v.time_ratio);
     std::printf("report: %s/report.html\n", out.c_str());

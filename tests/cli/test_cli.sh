@@ -208,6 +208,13 @@ if [ "$BULLET" = with-bullet ]; then
   if [ "$(ls "$T/vruns" | grep -c '\.classes\.png$')" = 5 ] && [ ! -e "$T/val1/runs" ]; then ok; else bad "vruns: $(ls "$T/vruns")"; fi
   expect 0 "validate reuses runs" -- "$BIN" validate "${TINY[@]}" --sweep none --runs "$T/vruns" --out "$T/val2"
   if [ -s "$T/val2/report.html" ] && [ -z "$(find "$T/vruns" -newer "$T/val1/report.json")" ]; then ok; else bad "DEM runs were redone"; fi
+  # --lattice-seeds: the lattice scored over several physics seeds, with its own seed-to-seed spread.
+  expect 0 "validate lattice seeds" -- "$BIN" validate "${TINY[@]}" --sweep none --runs "$T/vruns" --lattice-seeds 3 --out "$T/val3"
+  if grep -q '"lattice_seeds": 3' "$T/val3/report.json" && grep -q '"lattice_seed_to_seed"' "$T/val3/report.json" &&
+     grep -q "lattice seed to seed" "$T/val3/report.html" && grep -q "means over 3 physics seeds" "$T/out"; then ok
+  else bad "val3: $(cat "$T/out")"; fi
+  expect 2 "validate no lattice seed" -- "$BIN" validate "${TINY[@]}" --lattice-seeds 0 --out "$T/val4"
+  one_line; err_has "--lattice-seeds"; absent "$T/val4/report.html"
 else
   expect 2 "dem without Bullet" -- "$BIN" render -o "$T/e.png" --mode dem
   one_line; err_has "Bullet"; absent "$T/e.png"

@@ -101,6 +101,48 @@ TEST(Validation, RunsTheEnsembleKeepsItAndReportsEveryMetric) {
   std::filesystem::remove_all(dir);
 }
 
+// --lattice-seeds: the lattice's figures are the mean over every lattice seed
+// and DEM run, and its seed-to-seed spread is the mean over lattice pairs.
+TEST(Validation, ScoresTheLatticeOverSeveralSeeds) {
+  ValidateOptions opt;
+  opt.sweep_dem = opt.sweep_lattice = false;
+  opt.lattice_timing_runs = 1;
+  opt.lattice_seeds = 3;
+  const Scene s = small_scene();
+  Validation v = run_validation(s, opt, lattice_for_all(), [](const std::string&) {});
+  ASSERT_EQ(v.lattice_seeds.size(), 2u);
+  EXPECT_EQ(v.lattice.physics_seed, s.physics_rng());
+  EXPECT_EQ(v.lattice_seeds[1].physics_seed, s.physics_rng() + 2);
+  std::vector<const ValidationRun*> lats{&v.lattice, &v.lattice_seeds[0], &v.lattice_seeds[1]};
+  // The seeds give different piles (else the spread would be 0 by construction).
+  EXPECT_GT(cv::norm(v.lattice.picture, v.lattice_seeds[0].picture, cv::NORM_INF), 0);
+  double sil = 0, spread = 0;
+  for (const ValidationRun* l : lats)
+    for (const ValidationRun& d : v.dem)
+      sil += compare_pictures(l->picture, d.picture, s.grains.colors, opt.bands, opt.blur_sigma_px).silhouette_error / 15;
+  for (size_t a = 0; a < 3; ++a)
+    for (size_t b = a + 1; b < 3; ++b)
+      spread += compare_pictures(lats[a]->picture, lats[b]->picture, s.grains.colors, opt.bands, opt.blur_sigma_px)
+                    .silhouette_error / 3;
+  EXPECT_NEAR(v.metrics[0].lattice, sil, 1e-12);
+  EXPECT_NEAR(v.metrics[0].spread, spread, 1e-12);
+  EXPECT_GT(spread, 0);
+  const ordered_json j = validation_json(v, "test");
+  EXPECT_EQ(j["headline"]["lattice_seeds"], 3);
+  EXPECT_TRUE(j["metrics"][0].contains("lattice_seed_to_seed"));
+  EXPECT_EQ(j["runs"].size(), 8u);  // 3 lattice + 5 DEM
+  EXPECT_NE(validation_html(v, "test").find("lattice seed to seed"), std::string::npos);
+
+  // One seed: no spread, and the report says none.
+  opt.lattice_seeds = 1;
+  Validation one = run_validation(s, opt, lattice_for_all(), [](const std::string&) {});
+  EXPECT_TRUE(one.lattice_seeds.empty());
+  EXPECT_TRUE(std::isnan(one.metrics[0].spread));
+  EXPECT_FALSE(validation_json(one, "test")["metrics"][0].contains("lattice_seed_to_seed"));
+  opt.lattice_seeds = 0;
+  EXPECT_THROW(run_validation(s, opt, lattice_for_all(), [](const std::string&) {}), InputError);
+}
+
 TEST(Validation, NeedsFiveDemRuns) {
   ValidateOptions opt;
   opt.extra_seeds = 3;
