@@ -42,21 +42,24 @@ ValidationRun describe(const Job& j) {
   return r;
 }
 
+// A run's picture, simulate time and grain count, from its stats.
+void take(ValidationRun& r, const cv::Mat& picture, const ordered_json& stats) {
+  r.picture = picture;
+  r.simulate_s = stats["timing"]["simulate_s"].get<double>();
+  r.grains = stats["grains"]["total"].get<int64_t>();
+}
+
 ValidationRun run_job(const Job& j, const ValidateOptions& opt, const SimulatorFactory& make) {
   ValidationRun r = describe(j);
   if (!r.skipped.empty()) return r;
   if (std::optional<KeptRun> kept = load_kept(opt.cache_dir, j.label, j.scene)) {
-    r.picture = kept->picture;
-    r.simulate_s = kept->stats["timing"]["simulate_s"].get<double>();
-    r.grains = kept->stats["grains"]["total"].get<int64_t>();
+    take(r, kept->picture, kept->stats);
     r.cached = true;
     return r;
   }
   auto sim = make(j.scene);
   RunResult out = run_pipeline(j.scene, *sim, RunOptions{});
-  r.picture = out.picture;
-  r.simulate_s = out.stats["timing"]["simulate_s"].get<double>();
-  r.grains = out.stats["grains"]["total"].get<int64_t>();
+  take(r, out.picture, out.stats);
   if (!opt.cache_dir.empty()) keep_run(opt.cache_dir, j.label, out);
   return r;
 }
@@ -76,7 +79,7 @@ ValidationRun run_lattice(const Job& j, const ValidateOptions& opt, const Simula
       r.skipped = e.what();  // a sweep value this scene cannot take (a grid too fine)
       return r;
     }
-    if (i == 0) r.picture = out.picture, r.grains = out.stats["grains"]["total"].get<int64_t>();
+    if (i == 0) take(r, out.picture, out.stats);
     t.push_back(out.stats["timing"]["simulate_s"].get<double>());
   }
   r.simulate_s = median(t);
@@ -94,8 +97,7 @@ std::vector<ValidationRun> more_seeds(const Job& j, const ValidateOptions& opt, 
     k.scene.physics_seed = j.scene.physics_rng() + uint64_t(i);
     ValidationRun r = describe(k);
     RunResult out = run_pipeline(k.scene, *sim, RunOptions{});
-    r.picture = out.picture, r.grains = out.stats["grains"]["total"].get<int64_t>();
-    r.simulate_s = out.stats["timing"]["simulate_s"].get<double>();
+    take(r, out.picture, out.stats);
     runs.push_back(std::move(r));
   }
   return runs;
@@ -290,26 +292,27 @@ Validation run_validation(const Scene& base, const ValidateOptions& opt, const S
     }
   for (auto& r : v.sweep)
     if (r.group == "sweep-dem") against_dem(r, {});
-  std::vector<Comparison> pairs, spread;
+  std::vector<Comparison> pairs, lattice_pairs;
   for (size_t a = 0; a < v.dem.size(); ++a)
     for (size_t b = a + 1; b < v.dem.size(); ++b) pairs.push_back(compare(v.dem[a], v.dem[b]));
   std::vector<const ValidationRun*> lats{&v.lattice};
   for (auto& r : v.lattice_seeds) lats.push_back(&r);
   for (size_t a = 0; a < lats.size(); ++a)
-    for (size_t b = a + 1; b < lats.size(); ++b) spread.push_back(compare(*lats[a], *lats[b]));
-  const Comparison floor = mean_comparison(pairs), &l = v.lattice.mean, sp = mean_comparison(spread);
-  const double none = spread.empty() ? NAN : 0;  // NaN: one lattice seed has no spread
+    for (size_t b = a + 1; b < lats.size(); ++b) lattice_pairs.push_back(compare(*lats[a], *lats[b]));
+  const Comparison floor = mean_comparison(pairs), &l = v.lattice.mean, sp = mean_comparison(lattice_pairs);
+  // One lattice seed has no spread.
+  auto spread = [&](double x) { return lattice_pairs.empty() ? NAN : x; };
   auto ratio = [](double a, double b) { return b > 0 ? a / b : a > 0 ? INFINITY : 1.0; };
   v.metrics = {
       {"silhouette_error", l.silhouette_error, floor.silhouette_error, ratio(l.silhouette_error, floor.silhouette_error),
-       none + sp.silhouette_error},
+       spread(sp.silhouette_error)},
       {"composition_error", l.composition_error, floor.composition_error,
-       ratio(l.composition_error, floor.composition_error), none + sp.composition_error},
-      {"ssim", l.ssim, floor.ssim, ratio(1 - l.ssim, 1 - floor.ssim), none + sp.ssim},
+       ratio(l.composition_error, floor.composition_error), spread(sp.composition_error)},
+      {"ssim", l.ssim, floor.ssim, ratio(1 - l.ssim, 1 - floor.ssim), spread(sp.ssim)},
       {"ssim_blurred", l.ssim_blurred, floor.ssim_blurred, ratio(1 - l.ssim_blurred, 1 - floor.ssim_blurred),
-       none + sp.ssim_blurred},
+       spread(sp.ssim_blurred)},
       {"psnr_db", l.psnr_db, floor.psnr_db,
-       std::isfinite(floor.psnr_db) ? std::pow(10.0, (floor.psnr_db - l.psnr_db) / 10) : INFINITY, none + sp.psnr_db},
+       std::isfinite(floor.psnr_db) ? std::pow(10.0, (floor.psnr_db - l.psnr_db) / 10) : INFINITY, spread(sp.psnr_db)},
   };
   std::vector<double> dem_t;
   int cached = 0;
