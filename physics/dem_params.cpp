@@ -60,4 +60,9 @@ double dem_bounce_speed(const Water& w, double dt) {
   return 3 * *std::max_element(w.gravity_px_s2.begin(), w.gravity_px_s2.end()) * dt;
 }
 
+GrainMaterial dem_material(const Scene& s, const Water& w, double dt) {
+  return GrainMaterial{s.physics.friction, s.physics.restitution, s.dem.rolling_resistance, s.dem.solver_iterations,
+                       dem_bounce_speed(w, dt)};
+}
+
 }  // namespace sandpic

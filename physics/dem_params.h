@@ -3,6 +3,7 @@
 // and the solver's (masses), shared by the simulator and the tests.
 #include <array>
 
+#include "physics/world.h"
 #include "src/water.h"
 #include "src/scene.h"
 
@@ -19,6 +20,10 @@ std::array<double, kClasses> dem_masses(const Scene& s);
 
 // The speed (px/s) under which a contact does not bounce.
 double dem_bounce_speed(const Water& w, double dt);
+
+// The grains' contact material: the scene's friction, restitution and
+// rolling resistance, the solver's iterations, the bounce speed at `dt`.
+GrainMaterial dem_material(const Scene& s, const Water& w, double dt);
 
 // paper §8.1's α in degrees: dem.slope_limit_deg, or with 0 the angle at
 // which a lone grain starts to slide (friction) or roll (rolling

@@ -14,6 +14,7 @@
 #include "physics/layers.h"
 #include "physics/raster.h"
 #include "physics/stiffness.h"
+#include "physics/water_stage.h"
 #include "src/water.h"
 #include "physics/world.h"
 #include "src/errors.h"
@@ -51,6 +52,7 @@ class DemRun {
   void freeze_stage();
   void guard_stage();
   void frame_stage();
+  void run_on_stage();
   cv::Mat frame_map() const;
   void record(int32_t id, Vec2 p);
   void make_static(int32_t id, Vec2 p);
@@ -70,7 +72,8 @@ class DemRun {
   ReleaseModel model_;
   std::vector<Outlet> outlets_;
   std::vector<int32_t> unit_of_order_;
-  std::array<double, kClasses> radius_, mass_, decay_{};
+  WaterStage water_stage_;
+  std::array<double, kClasses> radius_, mass_;
   double dt_, small_d_, sub_dt_ = 0;
   LayerRule rule_;
   LayerHeights heights_;
@@ -91,6 +94,8 @@ class DemRun {
   int64_t released_ = 0, inserted_ = 0, settled_ = 0, fixed_ = 0, delayed_ = 0;
   int64_t resting_ = 0;  // bodies at rest after the last cycle
   double t_ = 0, energy_budget_ = 0, deepest_ = 0;
+  double run_on_end_ = -1, run_on_deepest_ = 0;  // dem.run_on_s: when it ends, the deepest overlap since the last sample
+  ordered_json run_on_ = ordered_json::array();
   int64_t steps_ = 0, cycles_ = 0;
   size_t peak_bodies_ = 0;
   ordered_json samples_ = ordered_json::array();
@@ -110,14 +115,13 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
       layers_(in.scene.dem.layers),
       water_(water_model(in.scene)),
       model_(release_model(in.scene)),
+      water_stage_(water_),
       radius_(dem_radii(in.scene)),
       mass_(dem_masses(in.scene)),
       dt_(dem_time_step(in.scene)),
       small_d_(2 * *std::min_element(radius_.begin(), radius_.end())),
       heights_(in.scene.window.width + 1),
-      world_(W_, H_, radius_, mass_,
-             GrainMaterial{in.scene.physics.friction, in.scene.physics.restitution, in.scene.dem.rolling_resistance,
-                           in.scene.dem.solver_iterations, dem_bounce_speed(water_, dt_)}),
+      world_(W_, H_, radius_, mass_, dem_material(in.scene, water_, dt_)),
       frames_{n_, in.frames.wanted() ? in.frames.count : 0},
       crowding_(W_, H_),
       watch_(in.scene.dem.max_overlap * small_d_, in.scene.dem.max_substeps) {
@@ -225,7 +229,7 @@ void DemRun::check_sinks() const {
 // Bullet's rolling-friction cap (dem_masses).
 void DemRun::set_substeps(int n) {
   sub_dt_ = dt_ / n;
-  for (int k = 0; k < kClasses; ++k) decay_[k] = std::exp(-water_.drag_per_s[k] * sub_dt_);
+  water_stage_.set_step(sub_dt_);
   world_.set_bounce_speed(dem_bounce_speed(water_, sub_dt_));
 }
 
@@ -238,20 +242,12 @@ void DemRun::move_stage() {
   }
 }
 
-// Gravity with buoyancy, and drag, integrated exactly for linear drag:
-// v ← v_t + (v − v_t)·e^(−k dt). Bullet then solves the contacts.
+// Gravity with buoyancy, and drag (physics/water_stage.h). Bullet then
+// solves the contacts.
 void DemRun::water_stage() {
   for (int32_t id : dynamic_) {
-    const int k = in_.grains.cls[size_t(id)];
     const int slot = slot_[size_t(id)];
-    Vec2 v = world_.velocity(slot);
-    if (water_.drag_per_s[k] > 0) {
-      Vec2 vt(0, -water_.terminal_px_s[k]);
-      v = vt + (v - vt) * decay_[k];
-    } else {
-      v.y() -= water_.gravity_px_s2[k] * sub_dt_;
-    }
-    world_.set_velocity(slot, v);
+    world_.set_velocity(slot, water_stage_.apply(in_.grains.cls[size_t(id)], world_.velocity(slot)));
   }
 }
 
@@ -464,6 +460,25 @@ void DemRun::frame_stage() {
   for (; frames_.due(released_); ++frames_.next) in_.frames.frame(map);
 }
 
+// Stage (every cycle of dem.run_on_s): the deepest overlap, and every
+// 0.25 s of simulated time the sand's height in every pixel column of the
+// picture as it stands (frame_map), with that overlap.
+void DemRun::run_on_stage() {
+  run_on_deepest_ = std::max(run_on_deepest_, world_.deepest_overlap());
+  const int64_t every = std::max<int64_t>(1, std::llround(0.25 / (s_.dem.cycle_steps * dt_)));
+  if (cycles_ % every && t_ < run_on_end_) return;
+  const cv::Mat map = frame_map();
+  std::vector<int> heights(size_t(W_), 0);
+  for (int c = 0; c < W_; ++c)
+    for (int r = 0; r < H_; ++r)
+      if (map.at<uint8_t>(r, c) != kNoSand) {
+        heights[size_t(c)] = H_ - r;
+        break;
+      }
+  run_on_.push_back({{"t_s", t_}, {"deepest_overlap_diameters", run_on_deepest_ / small_d_}, {"heights_px", heights}});
+  run_on_deepest_ = 0;
+}
+
 // paper Fig. 2i, 11: dynamic grains red, static blue, fixed black.
 cv::Mat DemRun::layer_map() const {
   std::vector<float> x(x_), y(y_);
@@ -522,8 +537,17 @@ SimResult DemRun::run() {
       const auto unsettled = std::count_if(dynamic_.begin(), dynamic_.end(), [&](int32_t id) {
         return cycles_ - anchor_cycle_[size_t(id)] < kSettleCycles;
       });
-      if (all_rest || double(unsettled) <= kUnsettled * double(dynamic_.size())) break;
+      if (all_rest || double(unsettled) <= kUnsettled * double(dynamic_.size())) {
+        // dem.run_on_s: the run goes on that much longer once settled, its
+        // outline sampled (verify-dem's creep case).
+        if (run_on_end_ < 0) run_on_end_ = t_ + s_.dem.run_on_s;
+        if (t_ >= run_on_end_) {
+          if (s_.dem.run_on_s > 0) run_on_stage();
+          break;
+        }
+      }
     }
+    if (run_on_end_ >= 0) run_on_stage();
     progress_.update(layers_ == Layers::AllDynamic ? inserted_ : settled_ + resting_);
     if (t_ > limit)
       throw SimulationError(std::to_string(n_ - settled_ - int64_t(dynamic_.size())) + " grains still falling and " +
@@ -562,6 +586,7 @@ SimResult DemRun::run() {
   out.stats["substep_changes"] = substep_stats();
   out.stats["terminal_speed_px_s"] = water_.terminal_px_s;
   out.stats["layer_counts"] = thin;
+  if (s_.dem.run_on_s > 0) out.stats["run_on"] = run_on_;
   return out;
 }
 

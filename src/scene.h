@@ -198,6 +198,9 @@ struct Scene {
     // water and Bullet step, up to this; past max_overlap at the most, the
     // run has diverged.
     int max_substeps = 16;
+    // Simulated seconds the run goes on after it has settled, its outline
+    // sampled every 0.25 s into the stats (verify-dem: does a pile creep?).
+    double run_on_s = 0;
   } dem;
   struct Render {
     std::string background;  // image for the emptied upper part (§10, Fig. 14g)

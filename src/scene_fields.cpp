@@ -634,6 +634,8 @@ std::vector<Field> make_fields() {
            "divergence: two grains overlapping by more than this (small-grain diameters) stop the run"),
       integer("dem.max_substeps", [](S& s) -> int& { return s.dem.max_substeps; }, 1, 256,
               "most sub-steps per step: a stiff run (deep overlaps, energy growing) doubles them up to this (1: never)"),
+      real("dem.run_on_s", [](S& s) -> double& { return s.dem.run_on_s; }, 0, 1000,
+           "simulated seconds the run goes on after it has settled, its outline sampled into the stats (run_on)"),
       text("render.background", [](S& s) -> auto& { return s.render.background; },
            "picture behind the emptied upper part (§10, Fig. 14g); empty: render.background_color"),
       figures_field(),

@@ -69,14 +69,17 @@ TEST(StiffnessWatch, LongCalmHalvesTheSubSteps) {
   EXPECT_EQ(w.most_substeps(), 4);
 }
 
-// A small DEM scene (about 300 grains), with a time step ten times the
-// default: the solver lets grains sink into each other.
+// A small DEM scene (about 300 grains) with a time step twenty times the
+// default (a grain falls a small grain's diameter per step) and perfectly
+// elastic grains: they sink 0.54 small diameters into each other, past a
+// divergence limit of half a diameter (the default step: under 0.01).
 Scene stiff_scene(int max_substeps) {
   Scene s = test::one_ellipse_scene(100, 90, 3);
   s.release.outlet_width_mm = 4;
   s.mode = Mode::Dem;
   s.dem.patience_cycles = 3;
-  s.dem.step_diameters = 0.5;
+  s.dem.step_diameters = 1;
+  s.dem.max_overlap = 0.5;
   s.physics.restitution = 1;
   s.dem.max_substeps = max_substeps;
   return s;

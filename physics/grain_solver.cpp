@@ -1,0 +1,95 @@
+#include "physics/grain_solver.h"
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+
+void GrainSolver::configure(btContactSolverInfo& info, int iterations) {
+  info.m_numIterations = iterations;
+  info.m_warmstartingFactor = 1;
+  info.m_splitImpulse = true;
+  info.m_splitImpulsePenetrationThreshold = 0;
+}
+
+void GrainSolver::convertContacts(btPersistentManifold** manifolds, int count, const btContactSolverInfo& info) {
+  for (int i = 0; i < count; ++i) convert(manifolds[i], info);
+}
+
+// Applies a row's starting impulse to its two bodies, as the solver's own
+// iterations apply theirs.
+void GrainSolver::warm_start(btSolverConstraint& row, btScalar impulse) {
+  row.m_appliedImpulse = impulse;
+  btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
+  btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
+  a.internalApplyImpulse(row.m_contactNormal1 * a.internalGetInvMass(), row.m_angularComponentA, impulse);
+  b.internalApplyImpulse(row.m_contactNormal2 * b.internalGetInvMass(), row.m_angularComponentB, impulse);
+}
+
+void GrainSolver::convert(btPersistentManifold* manifold, const btContactSolverInfo& info) {
+  auto* o0 = const_cast<btCollisionObject*>(manifold->getBody0());
+  auto* o1 = const_cast<btCollisionObject*>(manifold->getBody1());
+  const int a = getOrInitSolverBody(*o0, info.m_timeStep), b = getOrInitSolverBody(*o1, info.m_timeStep);
+  if (m_tmpSolverBodyPool[a].m_invMass.fuzzyZero() && m_tmpSolverBodyPool[b].m_invMass.fuzzyZero()) return;
+  for (int j = 0; j < manifold->getNumContacts(); ++j) {
+    btManifoldPoint& cp = manifold->getContactPoint(j);
+    if (cp.getDistance() > manifold->getContactProcessingThreshold()) continue;
+    const int index = m_tmpSolverContactConstraintPool.size();
+    btSolverConstraint& normal = m_tmpSolverContactConstraintPool.expandNonInitializing();
+    normal.m_solverBodyIdA = a, normal.m_solverBodyIdB = b;
+    normal.m_originalContactPoint = &cp;
+    const btVector3 r0 = cp.getPositionWorldOnA() - o0->getWorldTransform().getOrigin();
+    const btVector3 r1 = cp.getPositionWorldOnB() - o1->getWorldTransform().getOrigin();
+    btScalar relaxation;
+    setupContactConstraint(normal, a, b, cp, info, relaxation, r0, r1);  // warm-started by Bullet
+    normal.m_frictionIndex = m_tmpSolverContactFrictionConstraintPool.size();
+    btVector3 tangent(-cp.m_normalWorldOnB.y(), cp.m_normalWorldOnB.x(), 0);
+    tangent.normalize();
+    cp.m_lateralFrictionDir1 = tangent;
+    warm_start(addFrictionConstraint(tangent, a, b, index, cp, r0, r1, o0, o1, relaxation, info),
+               cp.m_appliedImpulseLateral1);
+    if (cp.m_combinedRollingFriction > 0)
+      warm_start(addTorsionalFrictionConstraint(btVector3(0, 0, 1), a, b, index, cp, cp.m_combinedRollingFriction, r0,
+                                                r1, o0, o1, relaxation),
+                 cp.m_appliedImpulseLateral2);
+    else
+      cp.m_appliedImpulseLateral2 = 0;
+  }
+}
+
+// One row within ±limit (a limit of zero takes a warm-started impulse off).
+btScalar GrainSolver::solve_limited(btSolverConstraint& row, btScalar limit) {
+  row.m_lowerLimit = -limit, row.m_upperLimit = limit;
+  const btScalar r = resolveSingleConstraintRowGeneric(m_tmpSolverBodyPool[row.m_solverBodyIdA],
+                                                       m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+  return r * r;
+}
+
+btScalar GrainSolver::solveSingleIteration(int, btCollisionObject**, int, btPersistentManifold**, int,
+                                           btTypedConstraint**, int, const btContactSolverInfo&, btIDebugDraw*) {
+  btScalar residual = 0;
+  for (int j = 0; j < m_tmpSolverContactConstraintPool.size(); ++j) {
+    const btSolverConstraint& c = m_tmpSolverContactConstraintPool[j];
+    const btScalar r =
+        resolveSingleConstraintRowLowerLimit(m_tmpSolverBodyPool[c.m_solverBodyIdA], m_tmpSolverBodyPool[c.m_solverBodyIdB], c);
+    residual = btMax(residual, r * r);
+  }
+  // Coulomb: |friction| <= mu N.
+  for (int j = 0; j < m_tmpSolverContactFrictionConstraintPool.size(); ++j) {
+    btSolverConstraint& f = m_tmpSolverContactFrictionConstraintPool[j];
+    residual = btMax(residual, solve_limited(f, f.m_friction * m_tmpSolverContactConstraintPool[f.m_frictionIndex].m_appliedImpulse));
+  }
+  // Rolling: |torque| <= mu_r R_r N (m_friction holds mu_r R_r, physics/world.cpp).
+  for (int j = 0; j < m_tmpSolverContactRollingFrictionConstraintPool.size(); ++j) {
+    btSolverConstraint& r = m_tmpSolverContactRollingFrictionConstraintPool[j];
+    residual = btMax(residual, solve_limited(r, r.m_friction * m_tmpSolverContactConstraintPool[r.m_frictionIndex].m_appliedImpulse));
+  }
+  return residual;
+}
+
+btScalar GrainSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int count,
+                                                    const btContactSolverInfo& info) {
+  for (int j = 0; j < m_tmpSolverContactRollingFrictionConstraintPool.size(); ++j) {
+    const btSolverConstraint& r = m_tmpSolverContactRollingFrictionConstraintPool[j];
+    static_cast<btManifoldPoint*>(m_tmpSolverContactConstraintPool[r.m_frictionIndex].m_originalContactPoint)
+        ->m_appliedImpulseLateral2 = r.m_appliedImpulse;
+  }
+  // Writes the normal and friction impulses back to the contacts.
+  return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, count, info);
+}

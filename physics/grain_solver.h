@@ -1,0 +1,46 @@
+#pragma once
+// Bullet's sequential-impulse solver with the rows a grain contact needs, in
+// the picture's plane, every one warm-started from the previous step.
+//
+// Bullet 3.24 warm-starts a contact's normal row only (at 0.85 of last
+// step's impulse); its friction and rolling rows start from zero at every
+// step, and every contact also carries a spinning row that a grain held in
+// the plane cannot use. Alternating between a friction row and a rolling row
+// from zero removes only 2/7 of the error per iteration (a sphere's contact
+// slip is 7/2 of its impulse over its mass), so 10 iterations left a grain
+// resting in a notch creeping 2-3° below its analytic holding angle, and a
+// pile's forces were never rebuilt. Here a contact has three rows: normal,
+// friction along the in-plane tangent z × n (the same direction every step,
+// so last step's impulse means the same thing), and rolling about z; all
+// three start from last step's impulses in full. The friction and rolling
+// limits follow the normal impulse at every iteration, also when it falls
+// to zero (Bullet skips the row then, which would leave a warm-started
+// impulse on a contact that opened). A contact's rolling impulse is kept
+// in its manifold point's second lateral impulse, which one friction
+// direction leaves unused.
+//
+// Overlap is corrected by split impulse (a position correction that adds
+// no velocity) at any depth: with Bullet's default it starts only past 0.04
+// px, and shallower overlaps were pushed apart through the velocities, an
+// impulse that, warm-started, would be pushed again at every step.
+#include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
+
+class GrainSolver : public btSequentialImpulseConstraintSolver {
+ public:
+  // The solver settings it is made for (warm-starting in full, split
+  // impulse at every depth, its iteration count).
+  static void configure(btContactSolverInfo& info, int iterations);
+
+ protected:
+  void convertContacts(btPersistentManifold** manifolds, int count, const btContactSolverInfo& info) override;
+  btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int body_count,
+                                btPersistentManifold** manifolds, int manifold_count, btTypedConstraint** constraints,
+                                int constraint_count, const btContactSolverInfo& info, btIDebugDraw* debug) override;
+  btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int count,
+                                         const btContactSolverInfo& info) override;
+
+ private:
+  void convert(btPersistentManifold* manifold, const btContactSolverInfo& info);
+  void warm_start(btSolverConstraint& row, btScalar impulse);
+  btScalar solve_limited(btSolverConstraint& row, btScalar limit);
+};
