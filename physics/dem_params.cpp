@@ -22,13 +22,11 @@ double dem_time_step(const Scene& s) {
   return s.dem.step_diameters * smallest / std::max(fastest, 1e-9);
 }
 
-// Bullet caps a contact's rolling-friction impulse at the coefficient itself,
-// as if the normal impulse were at most 1 (btSequentialImpulseConstraintSolver:
-// min(μ_r·N, μ_r)). With masses in g·px³/cm³ a resting grain's N per step is
-// ~40 and rolling resistance was ~40× too weak (a sphere rolled down 10°
-// slopes at μ_r = 0.5 R). Only ratios between classes matter to the solver,
-// so masses are scaled until the heaviest grain's weight per step is 1e-5:
-// a column of 10^4 grains stays under the cap.
+// Only ratios between classes matter to the solver, so masses are scaled
+// until the heaviest grain's weight per step is 1e-5. (Bullet's own rolling
+// row caps its impulse at the coefficient, min(μ_r·N, μ_r): with masses in
+// g·px³/cm³ rolling resistance was ~40× too weak. physics/grain_solver has
+// no cap; the scale stays as the solver's unit.)
 std::array<double, kClasses> dem_masses(const Scene& s) {
   const Water w = water_model(s);
   const double dt = dem_time_step(s);

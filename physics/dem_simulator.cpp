@@ -124,7 +124,7 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
       world_(W_, H_, radius_, mass_, dem_material(in.scene, water_, dt_)),
       frames_{n_, in.frames.wanted() ? in.frames.count : 0},
       crowding_(W_, H_),
-      watch_(in.scene.dem.max_overlap * small_d_, in.scene.dem.max_substeps) {
+      watch_(in.scene.dem.target_overlap * small_d_, in.scene.dem.max_overlap * small_d_, in.scene.dem.max_substeps) {
   check_sinks();
   set_substeps(1);
   for (const Unit& u : in.seg.units) outlets_.push_back(outlet(model_, u));
@@ -247,7 +247,8 @@ void DemRun::move_stage() {
 void DemRun::water_stage() {
   for (int32_t id : dynamic_) {
     const int slot = slot_[size_t(id)];
-    world_.set_velocity(slot, water_stage_.apply(in_.grains.cls[size_t(id)], world_.velocity(slot)));
+    const Vec2 v = world_.velocity(slot);
+    world_.push(slot, water_stage_.apply(in_.grains.cls[size_t(id)], v) - v, sub_dt_);
   }
 }
 

@@ -9,8 +9,23 @@ void GrainSolver::configure(btContactSolverInfo& info, int iterations) {
 }
 
 void GrainSolver::convertContacts(btPersistentManifold** manifolds, int count, const btContactSolverInfo& info) {
+  bounces_.clear();
   for (int i = 0; i < count; ++i) convert(manifolds[i], info);
 }
+
+namespace {
+// A row's normal speed at the start of the step, before this step's
+// gravity (`forced`: with it, as setupContactConstraint measures it).
+btScalar normal_speed(const btSolverConstraint& row, const btSolverBody& a, const btSolverBody& b, bool forced) {
+  const auto part = [forced](const btSolverBody& s, const btVector3& n, const btVector3& arm) {
+    if (!s.m_originalBody) return btScalar(0);
+    const btScalar f = forced ? 1 : 0;
+    return n.dot(s.m_linearVelocity + f * s.m_externalForceImpulse) +
+           arm.dot(s.m_angularVelocity + f * s.m_externalTorqueImpulse);
+  };
+  return part(a, row.m_contactNormal1, row.m_relpos1CrossNormal) + part(b, row.m_contactNormal2, row.m_relpos2CrossNormal);
+}
+}  // namespace
 
 // Applies a row's starting impulse to its two bodies, as the solver's own
 // iterations apply theirs.
@@ -37,7 +52,19 @@ void GrainSolver::convert(btPersistentManifold* manifold, const btContactSolverI
     const btVector3 r0 = cp.getPositionWorldOnA() - o0->getWorldTransform().getOrigin();
     const btVector3 r1 = cp.getPositionWorldOnB() - o1->getWorldTransform().getOrigin();
     btScalar relaxation;
+    const btScalar e = cp.m_combinedRestitution;
+    cp.m_combinedRestitution = 0;  // the bounce is a pass of its own
     setupContactConstraint(normal, a, b, cp, info, relaxation, r0, r1);  // warm-started by Bullet
+    cp.m_combinedRestitution = e;
+    if (e > 0) {
+      // The bounce answers the speed the grains met at, not that speed plus
+      // this step's push of the water (physics/world.h), or e = 1 would gain
+      // 2 g dt / v of its energy at every bounce.
+      const btSolverBody &sa = m_tmpSolverBodyPool[a], &sb = m_tmpSolverBodyPool[b];
+      const btScalar closing = normal_speed(normal, sa, sb, false);
+      if (closing < -info.m_restitutionVelocityThreshold)
+        bounces_.push_back({index, normal_speed(normal, sa, sb, true), -e * closing});
+    }
     normal.m_frictionIndex = m_tmpSolverContactFrictionConstraintPool.size();
     btVector3 tangent(-cp.m_normalWorldOnB.y(), cp.m_normalWorldOnB.x(), 0);
     tangent.normalize();
@@ -52,6 +79,7 @@ void GrainSolver::convert(btPersistentManifold* manifold, const btContactSolverI
       cp.m_appliedImpulseLateral2 = 0;
   }
 }
+
 
 // One row within ±limit (a limit of zero takes a warm-started impulse off).
 btScalar GrainSolver::solve_limited(btSolverConstraint& row, btScalar limit) {
@@ -85,11 +113,23 @@ btScalar GrainSolver::solveSingleIteration(int, btCollisionObject**, int, btPers
 
 btScalar GrainSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int count,
                                                     const btContactSolverInfo& info) {
+  // The bounce: a loaded contact that closed fast leaves at e times its closing speed.
+  for (Bounce& b : bounces_) {
+    btSolverConstraint& row = m_tmpSolverContactConstraintPool[b.row];
+    b.load = row.m_appliedImpulse;
+    b.point = static_cast<btManifoldPoint*>(row.m_originalContactPoint);
+    if (b.load <= 0) continue;
+    row.m_rhs = (b.leaving - b.closing) * row.m_jacDiagABInv;
+    resolveSingleConstraintRowLowerLimit(m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+  }
   for (int j = 0; j < m_tmpSolverContactRollingFrictionConstraintPool.size(); ++j) {
     const btSolverConstraint& r = m_tmpSolverContactRollingFrictionConstraintPool[j];
     static_cast<btManifoldPoint*>(m_tmpSolverContactConstraintPool[r.m_frictionIndex].m_originalContactPoint)
         ->m_appliedImpulseLateral2 = r.m_appliedImpulse;
   }
-  // Writes the normal and friction impulses back to the contacts.
-  return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, count, info);
+  // Writes the normal and friction impulses back to the contacts, then
+  // the loads without their bounces.
+  const btScalar r = btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, count, info);
+  for (const Bounce& b : bounces_) b.point->m_appliedImpulse = b.load;
+  return r;
 }

@@ -27,7 +27,10 @@ int GrainProbe::add(int cls, Vec2 p, Vec2 v) {
 void GrainProbe::add_static(int cls, Vec2 p) { world_->add_static(cls, p); }
 
 void GrainProbe::step() {
-  for (const auto& [slot, cls] : bodies_) world_->set_velocity(slot, water_.apply(cls, world_->velocity(slot)));
+  for (const auto& [slot, cls] : bodies_) {
+    const Vec2 v = world_->velocity(slot);
+    world_->push(slot, water_.apply(cls, v) - v, dt_);
+  }
   world_->step(dt_);
 }
 

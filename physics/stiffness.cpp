@@ -7,16 +7,16 @@ namespace sandpic {
 
 namespace {
 
-// Soft levels, measured on a 1,280-grain scene (160 x 120 px, region 8 px):
-// at the defaults the deepest overlap stayed under 0.043 of the hard limit
-// and the bodies' kinetic energy at most their energy at the settling
-// speeds (1.0, grains inserted at that speed); at dem.step_diameters 0.5
-// the overlap reached 0.5 of the limit cycles before it crossed it.
-constexpr double kSoftOverlap = 0.5;  // share of the hard overlap limit
-constexpr double kSoftKinetic = 4;    // × the settling speeds' energy: an rms speed twice the settling speed
-// Calm: under an eighth of the hard overlap and no faster than settling,
-// for this many cycles in a row: half the sub-steps.
-constexpr double kCalmOverlap = 0.125;
+// The overlap's soft level is dem.target_overlap. (It was half the hard
+// limit of one diameter: a 20x step sank grains 0.27 d into each other and
+// never sub-stepped, while the piles at the default step needed half the
+// step to converge.) The energy's: bodies faster than settling, measured on
+// a 1,280-grain scene, where at the defaults they stayed at most at their
+// energy at the settling speeds (grains are inserted at that speed).
+constexpr double kSoftKinetic = 4;  // × the settling speeds' energy: an rms speed twice the settling speed
+// Calm: under half the target and no faster than settling, for
+// this many cycles in a row: half the sub-steps.
+constexpr double kCalmOverlap = 0.5;
 constexpr int64_t kCalmCycles = 100;
 
 std::string number(double v) {
@@ -27,8 +27,8 @@ std::string number(double v) {
 
 }  // namespace
 
-StiffnessWatch::StiffnessWatch(double max_overlap_px, int max_substeps)
-    : max_overlap_px_(max_overlap_px), max_n_(std::max(1, max_substeps)) {}
+StiffnessWatch::StiffnessWatch(double target_px, double max_overlap_px, int max_substeps)
+    : target_px_(target_px), max_overlap_px_(max_overlap_px), max_n_(std::max(1, max_substeps)) {}
 
 std::string StiffnessWatch::hard(const StiffnessReading& r) const {
   if (r.overlap_px > max_overlap_px_)
@@ -40,15 +40,15 @@ std::string StiffnessWatch::hard(const StiffnessReading& r) const {
 }
 
 std::string StiffnessWatch::soft(const StiffnessReading& r) const {
-  if (r.overlap_px > kSoftOverlap * max_overlap_px_)
-    return "overlap " + number(r.overlap_px) + " px, over half of dem.max_overlap";
+  if (r.overlap_px > target_px_)
+    return "overlap " + number(r.overlap_px) + " px, over dem.target_overlap (" + number(target_px_) + " px)";
   if (r.kinetic > kSoftKinetic * r.settling)
     return "kinetic energy " + number(r.kinetic / std::max(r.settling, 1e-300)) + "x the settling speeds'";
   return "";
 }
 
 bool StiffnessWatch::calm(const StiffnessReading& r) const {
-  return r.overlap_px < kCalmOverlap * max_overlap_px_ && r.kinetic <= r.settling;
+  return r.overlap_px < kCalmOverlap * target_px_ && r.kinetic <= r.settling;
 }
 
 void StiffnessWatch::change(int n, double t_s, int64_t step) {

@@ -1,7 +1,8 @@
 #pragma once
-// The DEM's stiffness watch (issue 6). Every cycle the guard's readings (the
-// deepest overlap, the bodies' kinetic energy) are judged against a soft
-// level below the hard divergence limits. At the soft level the run doubles
+// The DEM's stiffness watch. Every cycle the guard's readings (the deepest
+// overlap, the bodies' kinetic energy) are judged against a soft level, the
+// overlap a converged contact solve keeps (dem.target_overlap), far below
+// the hard divergence limits. At the soft level the run doubles
 // its sub-steps (each step's water stage and world step done as n sub-steps
 // of dt/n, so a cycle is still dem.cycle_steps steps), up to
 // dem.max_substeps; past a hard limit below the most sub-steps it goes
@@ -32,8 +33,9 @@ class StiffnessWatch {
  public:
   enum class Verdict { Calm, Changed, Diverged };
 
-  // max_overlap_px: dem.max_overlap in px, the hard overlap limit.
-  StiffnessWatch(double max_overlap_px, int max_substeps);
+  // target_px: dem.target_overlap in px, the soft level; max_overlap_px:
+  // dem.max_overlap in px, the hard limit.
+  StiffnessWatch(double target_px, double max_overlap_px, int max_substeps);
 
   // Judges one cycle; on Changed the new count is substeps() and the change
   // is in changes(); on Diverged, reason() says what crossed which limit.
@@ -50,7 +52,7 @@ class StiffnessWatch {
   bool calm(const StiffnessReading& r) const;
   void change(int n, double t_s, int64_t step);
 
-  double max_overlap_px_;
+  double target_px_, max_overlap_px_;
   int max_n_, n_ = 1, most_ = 1;
   int64_t calm_cycles_ = 0;
   std::string reason_;

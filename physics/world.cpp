@@ -197,6 +197,12 @@ void GrainWorld::set_velocity(int slot, Vec2 v) {
   impl_->bodies[size_t(slot)]->setLinearVelocity(btVector3(btScalar(v.x()), btScalar(v.y()), 0));
 }
 
+void GrainWorld::push(int slot, Vec2 dv, double dt) {
+  btRigidBody& b = *impl_->bodies[size_t(slot)];
+  const double m = 1 / double(b.getInvMass());
+  b.applyCentralForce(btVector3(btScalar(m * dv.x() / dt), btScalar(m * dv.y() / dt), 0));  // cleared by the step
+}
+
 int GrainWorld::add_static(int cls, Vec2 p) {
   Impl& m = *impl_;
   auto o = m.static_object(m.spheres[cls].get(), btVector3(btScalar(p.x()), btScalar(p.y()), 0), m.radius[cls]);

@@ -37,6 +37,10 @@ class GrainWorld {
   Vec2 velocity(int slot) const;
   double spin(int slot) const;  // rad/s about z
   void set_velocity(int slot, Vec2 v);
+  // The velocity change the water makes over the next step of `dt`, given
+  // to Bullet as a force so its solver can tell the speed a contact met at
+  // from the push of the step it meets in (physics/grain_solver.h: bounces).
+  void push(int slot, Vec2 dv, double dt);
 
   int add_static(int cls, Vec2 position);  // a collider that never moves
   void remove_static(int slot);

@@ -180,7 +180,9 @@ struct Scene {
     double step_diameters = 0.05;  // most a grain moves in one step, in small-grain diameters
     int solver_iterations = 10;
     double release_rate = 4000;    // grains released per simulated second
-    double rolling_resistance = 0.6;  // rolling friction, as a fraction of the grain radius (tan 31°)
+    // Rolling resistance μ_r: the torque at a contact is at most μ_r·R_r·N.
+    // 0.1 piles a two-size heap at 31° at friction 0.4 (verify-dem, docs/dem.md).
+    double rolling_resistance = 0.1;
     bool water = true;             // drag and buoyancy of the device's water
     double water_density_g_cm3 = 1.0;
     double water_viscosity_pa_s = 1.0e-3;
@@ -193,10 +195,11 @@ struct Scene {
     double static_thickness_mm = 2;    // paper §8.1
     double insert_gap_diameters = 4;   // flight is analytic until this far above the pile
     double max_overlap = 1.0;          // divergence: overlap beyond this (small-grain diameters)
-    // Stiffness (issue 6): an overlap past half of max_overlap, or bodies
-    // twice as fast as settling, doubles the sub-steps of each step's
-    // water and Bullet step, up to this; past max_overlap at the most, the
-    // run has diverged.
+    // Stiffness (physics/stiffness.h): an overlap past target_overlap
+    // (small-grain diameters), or bodies twice as fast as settling, doubles
+    // the sub-steps of each step's water and Bullet step, up to
+    // max_substeps; past max_overlap at the most, the run has diverged.
+    double target_overlap = 0.05;
     int max_substeps = 16;
     // Simulated seconds the run goes on after it has settled, its outline
     // sampled every 0.25 s into the stats (verify-dem: does a pile creep?).

@@ -602,7 +602,7 @@ std::vector<Field> make_fields() {
       real("dem.release_rate", [](S& s) -> double& { return s.dem.release_rate; }, 1, 1e9,
            "grains released per simulated second (§7)"),
       real("dem.rolling_resistance", [](S& s) -> double& { return s.dem.rolling_resistance; }, 0, 10,
-           "rolling friction as a fraction of the grain radius (smooth spheres pile under 10° without it)"),
+           "rolling resistance μ_r: a contact's torque is at most μ_r·R_r·N, R_r = R_a·R_b/(R_a+R_b) (0: round grains spread flat)"),
       {"dem.water", "the device's water: drag and buoyancy per class density", false,
        [](const Scene& s) { return ordered_json(s.dem.water); },
        [](Scene& s, const json& v) {
@@ -632,6 +632,8 @@ std::vector<Field> make_fields() {
            "a falling grain becomes a body this far above the pile (diameters); above, its flight is analytic"),
       real("dem.max_overlap", [](S& s) -> double& { return s.dem.max_overlap; }, 0.01, 10,
            "divergence: two grains overlapping by more than this (small-grain diameters) stop the run"),
+      real("dem.target_overlap", [](S& s) -> double& { return s.dem.target_overlap; }, 0.001, 10,
+           "deepest overlap (small-grain diameters) a converged run keeps: past it, the sub-steps double"),
       integer("dem.max_substeps", [](S& s) -> int& { return s.dem.max_substeps; }, 1, 256,
               "most sub-steps per step: a stiff run (deep overlaps, energy growing) doubles them up to this (1: never)"),
       real("dem.run_on_s", [](S& s) -> double& { return s.dem.run_on_s; }, 0, 1000,

@@ -57,8 +57,8 @@ inline FirstFrameCounts first_frame_counts(const Scene& s, const cv::Mat& pictur
 inline std::vector<double> column_heights(const cv::Mat& class_map) { return silhouette(class_map); }
 
 // Slope angle of a single pile, in degrees: validate/'s.
-inline double flank_angle_deg(const std::vector<double>& h, double column_width = 1) {
-  return sandpic::flank_angle_deg(h, column_width);
+inline double heap_angle_deg(const std::vector<double>& h, double column_width = 1) {
+  return sandpic::heap_angle_deg(h, column_width);
 }
 
 }  // namespace sandpic::test

@@ -47,7 +47,11 @@ std::vector<FrictionBenchRow> run_friction_bench(const Scene& base, const Fricti
         row.friction = mu;
         row.seed = seed;
         row.grains = r.stats["grains"]["total"].get<int64_t>();
-        row.angle_deg = flank_angle_deg(silhouette(r.class_map));
+        const std::vector<double> outline = silhouette(r.class_map);
+        row.angle_deg = heap_angle_deg(outline);
+        double largest = 0;
+        for (int k = 0; k < kClasses; ++k) largest = std::max(largest, grain_diameter_px(s, k));
+        row.slope_deg = scene_slope_deg(outline, 8 * largest);
         row.simulate_s = r.stats["timing"]["simulate_s"].get<double>();
         row.picture = r.picture;
         if (l == Layers::AllDynamic) reference[seed] = r.class_map;
@@ -63,13 +67,15 @@ std::vector<FrictionBenchRow> run_friction_bench(const Scene& base, const Fricti
 std::string friction_bench_table(const std::vector<FrictionBenchRow>& rows) {
   std::map<std::string, std::map<double, std::vector<const FrictionBenchRow*>>> by;
   for (const FrictionBenchRow& r : rows) by[r.layers][r.friction].push_back(&r);
-  std::string out = "layers        friction  mean_angle  min_angle  max_angle  err_vs_all-dyn  median_s\n";
+  std::string out = "layers        friction  mean_angle  min_angle  max_angle  mean_slope  err_vs_all-dyn  median_s\n";
   for (auto& [layers, m] : by) {
     double last = -1;
     bool grows = true;
     for (auto& [mu, v] : m) {
       std::vector<double> a, e, t;
-      for (auto* r : v) a.push_back(r->angle_deg), e.push_back(r->silhouette_error), t.push_back(r->simulate_s);
+      double slope = 0;
+      for (auto* r : v)
+        a.push_back(r->angle_deg), e.push_back(r->silhouette_error), t.push_back(r->simulate_s), slope += r->slope_deg / double(v.size());
       double sum = 0;
       int n = 0;
       for (double x : a)
@@ -78,8 +84,9 @@ std::string friction_bench_table(const std::vector<FrictionBenchRow>& rows) {
       grows = grows && std::isfinite(mean) && mean > last;
       last = mean;
       char buf[256];
-      std::snprintf(buf, sizeof buf, "%-13s %8.2f %11.1f %10.1f %10.1f %15.4f %9.1f\n", layers.c_str(), mu, mean,
-                    *std::min_element(a.begin(), a.end()), *std::max_element(a.begin(), a.end()), median(e), median(t));
+      std::snprintf(buf, sizeof buf, "%-13s %8.2f %11.1f %10.1f %10.1f %11.1f %15.4f %9.1f\n", layers.c_str(), mu, mean,
+                    *std::min_element(a.begin(), a.end()), *std::max_element(a.begin(), a.end()), slope, median(e),
+                    median(t));
       out += buf;
     }
     out += layers + ": the mean angle " + (grows ? "grows" : "does NOT grow") + " with friction\n";
@@ -88,11 +95,12 @@ std::string friction_bench_table(const std::vector<FrictionBenchRow>& rows) {
 }
 
 std::string friction_bench_csv(const std::vector<FrictionBenchRow>& rows) {
-  std::string out = "layers,friction,physics_seed,grains,angle_deg,simulate_s,silhouette_error\n";
+  std::string out = "layers,friction,physics_seed,grains,angle_deg,slope_deg,simulate_s,silhouette_error\n";
   for (const FrictionBenchRow& r : rows) {
     char buf[256];
-    std::snprintf(buf, sizeof buf, "%s,%.3f,%llu,%lld,%.3f,%.4f,%.5f\n", r.layers.c_str(), r.friction,
-                  (unsigned long long)r.seed, (long long)r.grains, r.angle_deg, r.simulate_s, r.silhouette_error);
+    std::snprintf(buf, sizeof buf, "%s,%.3f,%llu,%lld,%.3f,%.3f,%.4f,%.5f\n", r.layers.c_str(), r.friction,
+                  (unsigned long long)r.seed, (long long)r.grains, r.angle_deg, r.slope_deg, r.simulate_s,
+                  r.silhouette_error);
     out += buf;
   }
   return out;

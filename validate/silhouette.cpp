@@ -1,5 +1,6 @@
 #include "validate/silhouette.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -30,7 +31,7 @@ double silhouette_error(const cv::Mat& a, const cv::Mat& b) {
   return ha.empty() ? 0 : sum / double(ha.size()) / a.rows;
 }
 
-double flank_angle_deg(const std::vector<double>& h, double column_width) {
+double heap_angle_deg(const std::vector<double>& h, double column_width) {
   size_t peak = 0;
   for (size_t i = 0; i < h.size(); ++i)
     if (h[i] > h[peak]) peak = i;
@@ -47,6 +48,20 @@ double flank_angle_deg(const std::vector<double>& h, double column_width) {
     return std::atan(std::abs(line(0))) * 180 / std::numbers::pi;
   };
   return (fit(+1) + fit(-1)) / 2;
+}
+
+double scene_slope_deg(const std::vector<double>& h, double smoothing) {
+  const long n = long(h.size()), half = std::max(0L, std::lround((smoothing - 1) / 2));
+  if (n < 2) return 0;
+  std::vector<double> prefix(size_t(n) + 1, 0.0), smoothed(static_cast<size_t>(n));
+  for (long i = 0; i < n; ++i) prefix[size_t(i) + 1] = prefix[size_t(i)] + h[size_t(i)];
+  for (long i = 0; i < n; ++i) {  // the window shrinks at the walls
+    const long a = std::max(0L, i - half), b = std::min(n - 1, i + half);
+    smoothed[size_t(i)] = (prefix[size_t(b) + 1] - prefix[size_t(a)]) / double(b - a + 1);
+  }
+  double sum = 0;
+  for (long i = 0; i + 1 < n; ++i) sum += std::abs(smoothed[size_t(i) + 1] - smoothed[size_t(i)]);
+  return std::atan(sum / double(n - 1)) * 180 / std::numbers::pi;
 }
 
 }  // namespace sandpic

@@ -16,9 +16,16 @@ std::vector<double> silhouette(const cv::Mat& class_map);
 // Both maps must have the same size.
 double silhouette_error(const cv::Mat& a, const cv::Mat& b);
 
-// Slope angle of a single pile, in degrees (paper Fig. 9): a least-squares
-// line through each flank between 20% and 80% of the peak height, the two
-// averaged. NaN if a flank has fewer than three columns in that band.
-double flank_angle_deg(const std::vector<double>& heights, double column_width = 1);
+// The heap angle of a single pile poured from a point, in degrees (paper
+// Fig. 9): a least-squares line through each flank between 20% and 80% of
+// the peak height, the two averaged. NaN if a flank has fewer than three
+// columns in that band. (A picture of many mountains has no one flank: use
+// scene_slope_deg.)
+double heap_angle_deg(const std::vector<double>& heights, double column_width = 1);
+
+// The scene slope of a picture of many mountains, in degrees: the mean of
+// |dh/dx| over every column of the outline smoothed by a running mean
+// `smoothing` columns wide (verify-dem: 8 large-grain diameters), as an angle.
+double scene_slope_deg(const std::vector<double>& heights, double smoothing);
 
 }  // namespace sandpic

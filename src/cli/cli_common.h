@@ -95,5 +95,7 @@ std::shared_ptr<void> add_validation_commands(CLI::App& app);
 std::shared_ptr<void> add_stress_command(CLI::App& app);
 // sandpic studio (issue 7).
 std::shared_ptr<void> add_studio_command(CLI::App& app);
+// sandpic verify-dem (src/cli/verify_command.cpp).
+std::shared_ptr<void> add_verify_command(CLI::App& app);
 
 }  // namespace sandpic

@@ -450,6 +450,7 @@ int cli_main(int argc, char** argv) {
   auto validation = add_validation_commands(app);
   auto stress = add_stress_command(app);
   auto studio = add_studio_command(app);
+  auto verify = add_verify_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

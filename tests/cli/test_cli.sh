@@ -150,7 +150,7 @@ if [ "$BULLET" = with-bullet ]; then
   is_png "$T/dem.png"; is_png "$T/dst/6-layers.png"; is_png "$T/dst/7-layers-end.png"
   if grep -q '"in_picture": 300' "$T/dem.json"; then ok; else bad "dem stats: $(cat "$T/dem.json")"; fi
   echo keep >"$T/keep.png"
-  expect 3 "dem divergence" -- "$BIN" render -o "$T/keep.png" --mode dem "${TINY[@]}" --set dem.max_overlap=0.01 --set dem.max_substeps=1 \
+  expect 3 "dem divergence" -- "$BIN" render -o "$T/keep.png" --mode dem "${TINY[@]}" --set dem.step_diameters=1 --set dem.max_overlap=0.1 --set dem.max_substeps=1 \
     --frames "$T/dfr" --video "$T/dfr.mp4"
   one_line; err_has "overlap"; err_has "physics seed"; absent "$T/dfr"; absent "$T/dfr.mp4"
   if ls "$T" | grep -q tmp-; then bad "a diverged run left temporaries: $(ls "$T")"; else ok; fi
@@ -162,6 +162,11 @@ if [ "$BULLET" = with-bullet ]; then
   expect 0 "dem frames" -- "$BIN" render -o "$T/dem2.png" --mode dem "${TINY[@]}" --frames "$T/dfr" --frame-count 5
   if [ "$(ls "$T/dfr" | wc -l)" = 5 ] && cmp -s "$T/dfr/frame-00004.png" "$T/dem2.png"; then ok; else bad "dem frames: $(ls "$T/dfr")"; fi
   if [ "$(cat "$T/keep.png")" = keep ]; then ok; else bad "a diverged run overwrote the output"; fi
+  # verify-dem: single grains against closed forms; a bad case id is refused.
+  expect 0 "verify-dem" -- "$BIN" verify-dem --out "$T/vd" --only restitution,incline
+  if grep -q '"pass": true' "$T/vd/report.json" && grep -q "<svg" "$T/vd/report.html"; then ok; else bad "verify-dem report: $(head -c 400 "$T/vd/report.json")"; fi
+  expect 2 "verify-dem bad case" -- "$BIN" verify-dem --out "$T/vd2" --only nonsense
+  one_line; err_has "nonsense"; absent "$T/vd2"
   # paper Fig. 12: the layer models side by side, as a table, CSV and plot.
   expect 0 "bench-layers" -- "$BIN" bench-layers "${TINY[@]}" --grains 100,200 --seeds 1,2 --all-dynamic-max 100 \
     --csv "$T/fig12.csv" --plot "$T/fig12.png"
@@ -226,6 +231,8 @@ else
   one_line; err_has "validate needs the DEM mode"; absent "$T/val/report.html"
   expect 2 "calibrate without Bullet" -- "$BIN" calibrate --out "$T/c.json"
   one_line; err_has "calibrate needs the DEM mode"; absent "$T/c.json"
+  expect 2 "verify-dem without Bullet" -- "$BIN" verify-dem --out "$T/vd"
+  one_line; err_has "Bullet"; absent "$T/vd"
 fi
 expect 2 "missing calibration" -- "$BIN" render -o "$T/e.png" --set lattice.calibration="$T/nothing.json"
 one_line; err_has "lattice.calibration"; absent "$T/e.png"

@@ -26,7 +26,7 @@ double pile_angle(double degrees, int n = 30000, int columns = 600) {
   }
   std::vector<double> h(static_cast<size_t>(columns));
   for (int c = 0; c < columns; ++c) h[size_t(c)] = f.height(c);
-  return test::flank_angle_deg(h);
+  return test::heap_angle_deg(h);
 }
 
 // The non-local rule reaches any angle of repose from about 5° to 60°, not

@@ -16,7 +16,7 @@ namespace {
 
 double pile_angle(const Scene& s) {
   SimResult r = test::simulate_scene(s, *make_lattice_simulator());
-  return test::flank_angle_deg(test::column_heights(r.class_map));
+  return test::heap_angle_deg(test::column_heights(r.class_map));
 }
 
 // paper §7, Fig. 9: piles grow steeper with friction.

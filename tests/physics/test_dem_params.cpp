@@ -9,12 +9,13 @@ namespace {
 // (atan μ_r) at, whichever is lower, plus the margin; a scene's own α wins.
 TEST(DemParams, SlopeLimitFollowsFrictionUnlessSet) {
   Scene s;
-  s.physics.friction = 0.4;
-  EXPECT_NEAR(dem_slope_limit_deg(s), 21.801 + 5, 1e-3);
-  s.physics.friction = 0.9;  // rolling resistance 0.6 is the lower
-  EXPECT_NEAR(dem_slope_limit_deg(s), 30.964 + 5, 1e-3);
+  s.physics.friction = 0.05;
+  s.dem.rolling_resistance = 0.1;
+  EXPECT_NEAR(dem_slope_limit_deg(s), 2.862 + 5, 1e-3);
+  s.physics.friction = 0.9;  // rolling resistance 0.1 is the lower
+  EXPECT_NEAR(dem_slope_limit_deg(s), 5.711 + 5, 1e-3);
   s.dem.slope_margin_deg = 0;
-  EXPECT_NEAR(dem_slope_limit_deg(s), 30.964, 1e-3);
+  EXPECT_NEAR(dem_slope_limit_deg(s), 5.711, 1e-3);
   s.dem.slope_limit_deg = 35;
   EXPECT_DOUBLE_EQ(dem_slope_limit_deg(s), 35);
 }

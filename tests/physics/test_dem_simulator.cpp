@@ -62,7 +62,7 @@ TEST(DemSimulator, PileSteepensWithFriction) {
     Scene s = small_dem_scene();
     s.physics.friction = mu;
     SimResult r = test::simulate_scene(s, *make_dem_simulator());
-    double angle = test::flank_angle_deg(test::column_heights(r.class_map));
+    double angle = test::heap_angle_deg(test::column_heights(r.class_map));
     std::printf("DEM friction %.1f: pile %.1f°\n", mu, angle);
     EXPECT_GT(angle, last + 3);
     last = angle;

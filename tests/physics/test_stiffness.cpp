@@ -14,19 +14,20 @@ namespace {
 
 using Verdict = StiffnessWatch::Verdict;
 
+// A target overlap of 0.05 and a hard limit of 1 (px).
 StiffnessReading reading(double overlap_px, double kinetic = 0.1) {
   return StiffnessReading{overlap_px, kinetic, /*settling=*/1.0, /*budget=*/100.0};
 }
 
 TEST(StiffnessWatch, CalmRunsKeepOneSubStep) {
-  StiffnessWatch w(1.0, 16);
+  StiffnessWatch w(0.05, 1.0, 16);
   for (int i = 0; i < 500; ++i) EXPECT_EQ(w.judge(reading(0.04, 1.0), i, i), Verdict::Calm);
   EXPECT_EQ(w.substeps(), 1);
   EXPECT_TRUE(w.changes().empty());
 }
 
 TEST(StiffnessWatch, SoftLevelDoublesUpToTheMost) {
-  StiffnessWatch w(1.0, 10);
+  StiffnessWatch w(0.05, 1.0, 10);
   for (int want : {2, 4, 8, 10}) {
     EXPECT_EQ(w.judge(reading(0.6), 0, 0), Verdict::Changed);
     EXPECT_EQ(w.substeps(), want);
@@ -39,7 +40,7 @@ TEST(StiffnessWatch, SoftLevelDoublesUpToTheMost) {
 }
 
 TEST(StiffnessWatch, EnergyGrowthIsSoftAndBeyondTheBudgetHard) {
-  StiffnessWatch w(1.0, 4);
+  StiffnessWatch w(0.05, 1.0, 4);
   EXPECT_EQ(w.judge(reading(0.0, 5.0), 0, 0), Verdict::Changed);  // rms speed over twice settling
   EXPECT_EQ(w.substeps(), 2);
   EXPECT_EQ(w.judge(reading(0.0, 200.0), 0, 0), Verdict::Changed);  // past the budget below the most: the most
@@ -49,13 +50,13 @@ TEST(StiffnessWatch, EnergyGrowthIsSoftAndBeyondTheBudgetHard) {
 }
 
 TEST(StiffnessWatch, OneSubStepAtMostDivergesAtTheHardLimit) {
-  StiffnessWatch w(1.0, 1);
+  StiffnessWatch w(0.05, 1.0, 1);
   EXPECT_EQ(w.judge(reading(0.9), 0, 0), Verdict::Calm);
   EXPECT_EQ(w.judge(reading(1.1), 0, 0), Verdict::Diverged);
 }
 
 TEST(StiffnessWatch, LongCalmHalvesTheSubSteps) {
-  StiffnessWatch w(1.0, 16);
+  StiffnessWatch w(0.05, 1.0, 16);
   w.judge(reading(0.6), 0, 0);
   w.judge(reading(0.6), 0, 0);
   ASSERT_EQ(w.substeps(), 4);
@@ -71,15 +72,15 @@ TEST(StiffnessWatch, LongCalmHalvesTheSubSteps) {
 
 // A small DEM scene (about 300 grains) with a time step twenty times the
 // default (a grain falls a small grain's diameter per step) and perfectly
-// elastic grains: they sink 0.54 small diameters into each other, past a
-// divergence limit of half a diameter (the default step: under 0.01).
+// elastic grains: they sink about 0.2 small diameters into each other, past
+// a divergence limit of a tenth of a diameter (the default step: about 0.01).
 Scene stiff_scene(int max_substeps) {
   Scene s = test::one_ellipse_scene(100, 90, 3);
   s.release.outlet_width_mm = 4;
   s.mode = Mode::Dem;
   s.dem.patience_cycles = 3;
   s.dem.step_diameters = 1;
-  s.dem.max_overlap = 0.5;
+  s.dem.max_overlap = 0.1;
   s.physics.restitution = 1;
   s.dem.max_substeps = max_substeps;
   return s;
@@ -94,12 +95,29 @@ TEST(DemStiffness, AStiffSceneDivergesWithoutSubStepsAndFinishesWithThem) {
   const auto& b = r.stats["backend"];
   EXPECT_GT(b["substeps"].get<int>(), 1);
   ASSERT_FALSE(b["substep_changes"].empty());
+
   for (const auto& c : b["substep_changes"]) {
     EXPECT_TRUE(std::isfinite(c["t_s"].get<double>()));
     EXPECT_GT(c["step"].get<int64_t>(), 0);
     EXPECT_GT(c["substeps"].get<int>(), 0);
     EXPECT_FALSE(c["reason"].get<std::string>().empty());
   }
+}
+
+// At ten times the default step (restitution and limits at their defaults)
+// no grain comes near the divergence limit, but contacts overlap past
+// dem.target_overlap: the run sub-steps on that alone.
+TEST(DemStiffness, AnOverlapPastTheTargetSubSteps) {
+  Scene s = stiff_scene(16);
+  s.dem.step_diameters = 0.5;
+  s.physics.restitution = Scene{}.physics.restitution;
+  s.dem.max_overlap = Scene{}.dem.max_overlap;
+  RunResult r = run(s);
+  const auto& changes = r.stats["backend"]["substep_changes"];
+  ASSERT_FALSE(changes.empty());
+  EXPECT_EQ(changes.front()["substeps"].get<int>(), 2);
+  EXPECT_NE(changes.front()["reason"].get<std::string>().find("dem.target_overlap"), std::string::npos)
+      << changes.front()["reason"];
 }
 
 TEST(DemStiffness, StatsAreFinite) {

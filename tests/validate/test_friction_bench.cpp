@@ -24,6 +24,7 @@ TEST(FrictionBench, EveryFrictionSeedAndModelWithAnglesAndErrors) {
   for (const FrictionBenchRow& r : rows) {
     EXPECT_GT(r.grains, 250);
     EXPECT_TRUE(std::isfinite(r.angle_deg)) << r.layers << " " << r.friction;
+    EXPECT_GT(r.slope_deg, 0) << r.layers << " " << r.friction;
     EXPECT_GT(r.simulate_s, 0);
     EXPECT_EQ(r.picture.size(), cv::Size(90, 36));
     if (r.layers == "all-dynamic") {

@@ -140,7 +140,7 @@ TEST(StressCases, TheIssuesCasesAreAllThereWithUniqueNames) {
     EXPECT_FALSE(c.expect.empty()) << c.name;
   }
   for (const char* n : {"friction-0", "friction-1.5", "restitution-0", "restitution-1", "grains-0.01mm", "grains-5mm",
-                        "density-100:1", "step-x10", "step-x10-no-substeps", "step-div10", "millions", "region-1px", "region-full", "region-full-fine",
+                        "density-100:1", "step-x10", "step-x20-no-substeps", "step-div10", "millions", "region-1px", "region-full", "region-full-fine",
                         "eccentricity-0", "eccentricity-0.999", "ellipses-overlapping", "ellipses-outside", "image-1x1",
                         "image-16bit", "image-grey", "image-alpha", "image-wrong-size", "json-malformed", "json-nan"})
     EXPECT_TRUE(names.count(n)) << n;

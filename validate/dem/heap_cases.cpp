@@ -1,0 +1,369 @@
+// verify-dem's pile cases: heaps poured from a point and the default scene
+// at a small scale, through the pipeline (src/pipeline.h) with the DEM,
+// several at once on TBB's threads (each run is a world of its own, so the
+// results do not depend on the thread count).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numeric>
+
+#include <tbb/parallel_for.h>
+
+#include "physics/dem_params.h"
+#include "physics/dem_simulator.h"
+#include "src/pipeline.h"
+#include "validate/dem/cases.h"
+#include "validate/friction_bench.h"
+#include "validate/layer_bench.h"
+#include "validate/silhouette.h"
+
+namespace sandpic::verify {
+namespace {
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+VerifyCheck within(std::string name, double measured, double expected, double tolerance, std::string unit) {
+  return {std::move(name), std::move(unit), measured, expected, tolerance, VerifyCheck::Kind::Within};
+}
+VerifyCheck at_most(std::string name, double measured, double bound, std::string unit) {
+  return {std::move(name), std::move(unit), measured, bound, 0, VerifyCheck::Kind::AtMost};
+}
+
+// What the piles are in each mode.
+struct Plan {
+  Scene heap;                          // a heap poured from a point
+  std::vector<uint64_t> seeds;         // physics seeds
+  double scene_scale;                  // the default scene's scale for the layers case
+  double scene_region = 0;             // and its region's height (px; 0: as scaled)
+  double spread_deg, layers_deg;       // tolerances: seed spread, three vs all-dynamic slope
+  double default_low = 25, default_high = 40;  // the default's heap angle: sand's
+  std::vector<double> friction, rolling;
+};
+
+Plan plan(const VerifyOptions& opt) {
+  Plan p;
+  p.heap = pile_scene();  // 300×120 px, a 12 px region: 3,600 grains
+  p.seeds = {1, 2, 3};
+  p.scene_scale = 0.1;   // 3,500 grains
+  p.spread_deg = 2;
+  p.layers_deg = 1.5;
+  p.friction = {0.1, 0.4, 0.9};
+  p.rolling = {0, 0.3, 0.6};
+  if (opt.quick) {  // a few hundred grains: looser tolerances
+    p.heap.window = {120, 60};
+    p.heap.region.height = 4;  // 480 grains
+    p.heap.segment.ellipses = {EllipseSpec{60, 2, 60, 2, 0}};
+    p.heap.init.cell_height = 4;
+    p.seeds = {1, 2};
+    p.scene_region = 6;  // 600 grains (the scale's smallest: init.row_height_min)
+    p.spread_deg = 5;
+    p.layers_deg = 4;
+    p.default_high = 45;  // a heap 15 px high stands steeper: 41° where 3,600 grains stand at 31°
+    p.friction = {0.1, 0.9};
+    // And the default. Without rolling resistance a heap of a few hundred
+    // round grains spreads to the walls of this window (3.5° at friction
+    // 0.1): no heap angle to compare; the full run has μ_r 0 in a wider one.
+    p.rolling = {0.3};
+  }
+  return p;
+}
+
+struct Run {
+  Scene scene;
+  cv::Mat class_map, picture;
+  ordered_json stats;
+  double simulate_s = 0;
+};
+
+// Every scene through the pipeline with the DEM, in parallel; results in order.
+std::vector<Run> run_all(std::vector<Scene> scenes, const VerifyOptions& opt, const std::string& what) {
+  std::vector<Run> runs(scenes.size());
+  std::atomic<int> done{0};
+  tbb::parallel_for(size_t(0), scenes.size(), [&](size_t i) {
+    auto sim = make_dem_simulator();
+    RunResult r = run_pipeline(scenes[i], *sim, RunOptions{});
+    runs[i] = {scenes[i], r.class_map, r.picture, r.stats, r.stats["timing"]["simulate_s"].get<double>()};
+    opt.log(what + ": " + std::to_string(++done) + "/" + std::to_string(scenes.size()) + " runs");
+  });
+  return runs;
+}
+
+double mean(const std::vector<double>& v) { return v.empty() ? NAN : std::accumulate(v.begin(), v.end(), 0.0) / double(v.size()); }
+double spread(const std::vector<double>& v) {  // standard deviation over seeds
+  if (v.size() < 2) return 0;
+  const double m = mean(v);
+  double s = 0;
+  for (double x : v) s += (x - m) * (x - m);
+  return std::sqrt(s / double(v.size() - 1));
+}
+
+// The mean silhouette error between every pair of runs (the floor).
+double floor_error(const std::vector<const Run*>& runs) {
+  double sum = 0;
+  int n = 0;
+  for (size_t i = 0; i < runs.size(); ++i)
+    for (size_t j = i + 1; j < runs.size(); ++j) sum += silhouette_error(runs[i]->class_map, runs[j]->class_map), ++n;
+  return n ? sum / n : NAN;
+}
+
+Scene with(Scene s, Layers l, double mu, double mr, uint64_t seed) {
+  s.mode = Mode::Dem;
+  s.dem.layers = l;
+  s.physics.friction = mu;
+  s.dem.rolling_resistance = mr;
+  s.physics_seed = seed;
+  return s;
+}
+
+double heap_angle(const Run& r) { return heap_angle_deg(silhouette(r.class_map)); }
+
+// The scene slope, smoothed over 8 large-grain diameters.
+double slope(const Run& r) {
+  const auto radii = dem_radii(r.scene);
+  return scene_slope_deg(silhouette(r.class_map), 16 * *std::max_element(radii.begin(), radii.end()));
+}
+
+}  // namespace
+
+// Case 5: the heap angle against sliding friction and rolling resistance,
+// all-dynamic and three-layer, over physics seeds.
+VerifyCase heap(const VerifyOptions& opt) {
+  const Plan p = plan(opt);
+  const double default_mr = Scene{}.dem.rolling_resistance, default_mu = Scene{}.physics.friction;
+  VerifyCase c{"heap", "Heap angle against friction and rolling resistance",
+               "a heap poured from a point (" + std::to_string(p.heap.window.width * p.heap.region.height) +
+                   " grains, two sizes): its angle grows with sliding friction and with rolling resistance, seeds "
+                   "agree within " + fmt("%.0f", p.spread_deg) + "°, three-layer equals all-dynamic within max(" +
+                   fmt("%.1f", p.layers_deg) + "°, 2 seed spreads), and the default lies in " +
+                   fmt("%.0f", p.default_low) + "–" + fmt("%.0f", p.default_high) +
+                   "° (real sand: about 25° rounded to 40° angular)"};
+  std::vector<double> rolling = p.rolling;
+  if (std::find(rolling.begin(), rolling.end(), default_mr) == rolling.end()) rolling.push_back(default_mr);
+  std::sort(rolling.begin(), rolling.end());
+  std::vector<Scene> scenes;
+  for (Layers l : {Layers::AllDynamic, Layers::Three})
+    for (double mu : p.friction)
+      for (double mr : rolling)
+        for (uint64_t seed : p.seeds) scenes.push_back(with(p.heap, l, mu, mr, seed));
+  if (std::find(p.friction.begin(), p.friction.end(), default_mu) == p.friction.end())
+    for (Layers l : {Layers::AllDynamic, Layers::Three})
+      for (uint64_t seed : p.seeds) scenes.push_back(with(p.heap, l, default_mu, default_mr, seed));
+  const std::vector<Run> runs = run_all(scenes, opt, "heap");
+  // angle[layers][mu][mr] over seeds
+  std::map<Layers, std::map<double, std::map<double, std::vector<double>>>> angle;
+  for (const Run& r : runs)
+    angle[r.scene.dem.layers][r.scene.physics.friction][r.scene.dem.rolling_resistance].push_back(heap_angle(r));
+  for (Layers l : {Layers::AllDynamic, Layers::Three}) {
+    const std::string name = layers_name(l);
+    VerifyPlot plot{"Heap angle, " + name, "rolling resistance μ_r", "heap angle (deg)", {}};
+    for (auto& [mu, by_mr] : angle[l]) {
+      PlotSeries line{"friction " + fmt("%.1f", mu), {}, {}, false};
+      for (auto& [mr, a] : by_mr) {
+        line.x.push_back(mr), line.y.push_back(mean(a));
+        c.checks.push_back(at_most(name + ", μ " + fmt("%.1f", mu) + ", μ_r " + fmt("%.2f", mr) + ": seed spread (mean " +
+                                       fmt("%.1f", mean(a)) + "°)",
+                                   spread(a), p.spread_deg, "°"));
+      }
+      plot.series.push_back(std::move(line));
+    }
+    c.plots.push_back(std::move(plot));
+    // Grows with each: no step down beyond the seed spreads, and the last
+    // value above the first by more than two. Rolling resistance adds only
+    // while sliding does not cap it: a grain in a notch holds to 30° +
+    // atan(min(μ, μ_r/2)) (the notch case), so the rise is checked over the
+    // μ_r up to 2μ (at μ 0.1: μ_r 0.2).
+    auto grows = [&](const std::vector<std::vector<double>>& seq, size_t rising, const std::string& what) {
+      double worst_drop = 0;
+      for (size_t i = 1; i < seq.size(); ++i)
+        worst_drop = std::max(worst_drop, mean(seq[i - 1]) - mean(seq[i]) - spread(seq[i - 1]) - spread(seq[i]));
+      c.checks.push_back(at_most(name + ": " + what + ", largest fall beyond the seed spreads", worst_drop, 0, "°"));
+      if (rising < 2) return;
+      const auto &first = seq.front(), &last = seq[rising - 1];
+      const double rise = mean(last) - mean(first) - 2 * (spread(last) + spread(first));
+      c.checks.push_back({name + ": " + what + ", rise from first to last beyond 2 seed spreads", "°", rise, 0, 0,
+                          VerifyCheck::Kind::AtLeast});
+    };
+    for (double mr : rolling) {
+      std::vector<std::vector<double>> seq;
+      for (double mu : p.friction) seq.push_back(angle[l][mu][mr]);
+      grows(seq, seq.size(), "angle against friction at μ_r " + fmt("%.2f", mr));
+    }
+    for (double mu : p.friction) {
+      std::vector<std::vector<double>> seq;
+      size_t rising = 0;
+      for (double mr : rolling) {
+        seq.push_back(angle[l][mu][mr]);
+        rising += mr <= 2 * mu + 1e-9;
+      }
+      grows(seq, rising, "angle against rolling resistance at μ " + fmt("%.1f", mu) + " (rise over μ_r ≤ 2μ)");
+    }
+  }
+  const auto& def = angle[Layers::AllDynamic][default_mu][default_mr];
+  c.checks.push_back(within("all-dynamic, the default (μ " + fmt("%.1f", default_mu) + ", μ_r " + fmt("%.2f", default_mr) +
+                                "): heap angle, " + fmt("%.0f", p.default_low) + "–" + fmt("%.0f", p.default_high) + "°",
+                            mean(def), (p.default_low + p.default_high) / 2, (p.default_high - p.default_low) / 2, "°"));
+  for (auto& [mu, by_mr] : angle[Layers::Three])
+    for (auto& [mr, a] : by_mr) {
+      const auto& ref = angle[Layers::AllDynamic][mu][mr];
+      c.checks.push_back(within("three-layer against all-dynamic, μ " + fmt("%.1f", mu) + ", μ_r " + fmt("%.2f", mr),
+                                mean(a), mean(ref), std::max(p.layers_deg, 2 * std::max(spread(a), spread(ref))), "°"));
+    }
+  for (const Run& r : runs)
+    if (r.scene.physics_seed == p.seeds.front() && r.scene.physics.friction == default_mu &&
+        r.scene.dem.rolling_resistance == default_mr)
+      c.pictures.emplace_back(layers_name(r.scene.dem.layers) + ", the default, seed " + std::to_string(p.seeds.front()),
+                              r.picture);
+  double total = 0;
+  for (const Run& r : runs) total += r.simulate_s;
+  c.notes.push_back(std::to_string(runs.size()) + " runs, " + fmt("%.0f", total) + " s of simulation in all");
+  return c;
+}
+
+// Case 6: an all-dynamic heap at the defaults goes on 5 s of simulated time
+// after it has settled: its heap angle does not drift, and no two grains
+// ever overlap deeply.
+VerifyCase creep(const VerifyOptions& opt) {
+  const Plan p = plan(opt);
+  const double run_on = opt.quick ? 2 : 5, trend_limit = opt.quick ? 0.5 : 0.1, overlap_limit = 0.05;
+  VerifyCase c{"creep", "No creep",
+               "an all-dynamic heap at the defaults, run on " + fmt("%.0f", run_on) +
+                   " s of simulated time after it settled: least-squares trend of its heap angle at most " +
+                   fmt("%.1f", trend_limit) + "°/s, deepest overlap at most " + fmt("%.2f", overlap_limit) +
+                   " small-grain diameters over the whole run"};
+  std::vector<Scene> scenes;
+  for (uint64_t seed : p.seeds) {
+    Scene s = with(p.heap, Layers::AllDynamic, Scene{}.physics.friction, Scene{}.dem.rolling_resistance, seed);
+    s.dem.run_on_s = run_on;
+    scenes.push_back(s);
+  }
+  const std::vector<Run> runs = run_all(scenes, opt, "creep");
+  VerifyPlot plot{"Heap angle after settling (all-dynamic)", "t after settling (s)", "heap angle (deg)", {}};
+  for (const Run& r : runs) {
+    const auto& samples = r.stats["backend"]["run_on"];
+    PlotSeries line{"seed " + std::to_string(*r.scene.physics_seed), {}, {}, false};
+    double st = 0, sa = 0, stt = 0, sta = 0, t0 = NAN;
+    for (const auto& sm : samples) {
+      const std::vector<int> h = sm["heights_px"].get<std::vector<int>>();
+      const double t = sm["t_s"].get<double>(), a = heap_angle_deg(std::vector<double>(h.begin(), h.end()));
+      if (std::isnan(t0)) t0 = t;
+      line.x.push_back(t - t0), line.y.push_back(a);
+      st += t - t0, sa += a, stt += (t - t0) * (t - t0), sta += (t - t0) * a;
+    }
+    const double n = double(line.x.size());
+    const double trend = n > 2 ? (n * sta - st * sa) / (n * stt - st * st) : NAN;
+    const std::string seed = "seed " + std::to_string(*r.scene.physics_seed);
+    c.checks.push_back(within(seed + ": trend of the heap angle", trend, 0, trend_limit, "°/s"));
+    c.checks.push_back(at_most(seed + ": deepest overlap, whole run", r.stats["backend"]["deepest_overlap_diameters"].get<double>(),
+                               overlap_limit, "d"));
+    plot.series.push_back(std::move(line));
+  }
+  c.plots.push_back(std::move(plot));
+  return c;
+}
+
+// Case 7: the paper's layer models are accelerations: on the default scene
+// at a small scale, three-layer and BCRE pile as all-dynamic does.
+VerifyCase layers(const VerifyOptions& opt) {
+  const Plan p = plan(opt);
+  VerifyCase c{"layers", "Three-layer and BCRE equal all-dynamic",
+               "the default scene at --scale " + fmt("%.2f", p.scene_scale) +
+                   (p.scene_region > 0 ? " with a region " + fmt("%.0f", p.scene_region) + " px tall" : std::string()) +
+                   ", friction 0.1 and 0.9: scene slopes (mean |dh/dx| smoothed over 8 large-grain diameters) within "
+                   "max(" + fmt("%.1f", p.layers_deg) + "°, 2 seed spreads) of all-dynamic's, and the silhouette error "
+                   "against all-dynamic (same seed) at most 1.25× all-dynamic's own seed-to-seed floor (paper Fig. 13: "
+                   "BCRE and three layers alike)"};
+  Scene base;
+  apply_scale(base, p.scene_scale);
+  if (p.scene_region > 0) base.region.height = p.scene_region;
+  std::vector<Scene> scenes;
+  for (double mu : {0.1, 0.9})
+    for (Layers l : {Layers::AllDynamic, Layers::Three, Layers::Bcre})
+      for (uint64_t seed : p.seeds) scenes.push_back(with(base, l, mu, base.dem.rolling_resistance, seed));
+  const std::vector<Run> runs = run_all(scenes, opt, "layers");
+  VerifyPlot plot{"Scene slope by layer model", "friction", "scene slope (deg)", {}};
+  std::map<Layers, PlotSeries> lines;
+  for (double mu : {0.1, 0.9}) {
+    std::map<Layers, std::vector<const Run*>> by;
+    for (const Run& r : runs)
+      if (r.scene.physics.friction == mu) by[r.scene.dem.layers].push_back(&r);
+    auto slopes = [&](Layers l) {
+      std::vector<double> v;
+      for (const Run* r : by[l]) v.push_back(slope(*r));
+      return v;
+    };
+    const std::vector<double> all = slopes(Layers::AllDynamic);
+    const double floor = floor_error(by[Layers::AllDynamic]);
+    for (Layers l : {Layers::AllDynamic, Layers::Three, Layers::Bcre}) {
+      const std::vector<double> v = slopes(l);
+      PlotSeries& line = lines[l];
+      line.label = layers_name(l), line.points = true;
+      for (double x : v) line.x.push_back(mu), line.y.push_back(x);
+      if (l == Layers::AllDynamic) continue;
+      const std::string name = layers_name(l) + ", friction " + fmt("%.1f", mu);
+      c.checks.push_back(within(name + ": mean scene slope", mean(v), mean(all),
+                                std::max(p.layers_deg, 2 * std::max(spread(v), spread(all))), "°"));
+      double err = 0;
+      for (size_t i = 0; i < by[l].size(); ++i) err += silhouette_error(by[l][i]->class_map, by[Layers::AllDynamic][i]->class_map);
+      err /= double(by[l].size());
+      c.checks.push_back(at_most(name + ": silhouette error against all-dynamic over its floor (" + fmt("%.4f", floor) + ")",
+                                 err / floor, 1.25, "×"));
+    }
+    for (const Run* r : {by[Layers::AllDynamic].front(), by[Layers::Three].front()})
+      c.pictures.emplace_back(layers_name(r->scene.dem.layers) + ", friction " + fmt("%.1f", mu) + ", seed " +
+                                  std::to_string(*r->scene.physics_seed) + ", " + fmt("%.0f", r->simulate_s) + " s",
+                              r->picture);
+  }
+  for (auto& [l, line] : lines) plot.series.push_back(line);
+  c.plots.push_back(std::move(plot));
+  return c;
+}
+
+// Case 8: halving the time step changes the heap angle and the outline by
+// less than the seeds do.
+VerifyCase step(const VerifyOptions& opt) {
+  const Plan p = plan(opt);
+  VerifyCase c{"step", "Step convergence",
+               "heaps at dem.step_diameters and at half of it, three-layer and all-dynamic, physics seeds " +
+                   std::to_string(p.seeds.front()) + "–" + std::to_string(p.seeds.back()) +
+                   ": the mean heap angles differ by at most the larger seed spread (at least 1°), and the "
+                   "silhouette error between the two steps (same seed) is at most 1.25× the seed-to-seed floor"};
+  const double step = Scene{}.dem.step_diameters;
+  std::vector<Scene> scenes;
+  for (Layers l : {Layers::AllDynamic, Layers::Three})
+    for (double f : {1.0, 0.5})
+      for (uint64_t seed : p.seeds) {
+        Scene s = with(p.heap, l, Scene{}.physics.friction, Scene{}.dem.rolling_resistance, seed);
+        s.dem.step_diameters = step * f;
+        scenes.push_back(s);
+      }
+  const std::vector<Run> runs = run_all(scenes, opt, "step");
+  const size_t n = p.seeds.size();
+  for (size_t li = 0; li < 2; ++li) {
+    const Run* base = &runs[li * 2 * n];
+    const Run* half = base + n;
+    std::vector<double> a, b;
+    std::vector<const Run*> bases;
+    double err = 0;
+    for (size_t i = 0; i < n; ++i) {
+      a.push_back(heap_angle(base[i])), b.push_back(heap_angle(half[i]));
+      bases.push_back(base + i);
+      err += silhouette_error(base[i].class_map, half[i].class_map) / double(n);
+    }
+    const std::string name = layers_name(base->scene.dem.layers);
+    c.checks.push_back(within(name + ": mean heap angle at half the step (" + fmt("%.1f", mean(a)) + "° at the step)", mean(b),
+                              mean(a), std::max(1.0, std::max(spread(a), spread(b))), "°"));
+    const double floor = floor_error(bases);
+    c.checks.push_back(at_most(name + ": silhouette error between the steps over the floor (" + fmt("%.4f", floor) + ")",
+                               err / floor, 1.25, "×"));
+    c.notes.push_back(name + ": " + fmt("%.0f", base->simulate_s) + " s at the step, " + fmt("%.0f", half->simulate_s) +
+                      " s at half of it (seed " + std::to_string(p.seeds.front()) + ")");
+  }
+  return c;
+}
+
+}  // namespace sandpic::verify

@@ -1,0 +1,132 @@
+#include "validate/dem/verify_dem.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include <tbb/global_control.h>
+
+#include "src/errors.h"
+#include "validate/dem/cases.h"
+
+namespace sandpic {
+
+namespace {
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+using CaseFn = VerifyCase (*)(const VerifyOptions&);
+const std::vector<std::pair<std::string, CaseFn>>& cases() {
+  static const std::vector<std::pair<std::string, CaseFn>> all = {
+      {"settling", verify::settling}, {"restitution", verify::restitution}, {"incline", verify::incline},
+      {"rolling", verify::rolling},   {"notch", verify::notch},             {"heap", verify::heap},
+      {"creep", verify::creep},       {"layers", verify::layers},           {"step", verify::step}};
+  return all;
+}
+
+}  // namespace
+
+bool VerifyCheck::pass() const {
+  if (!std::isfinite(measured)) return false;
+  switch (kind) {
+    case Kind::Within: return std::abs(measured - expected) <= tolerance;
+    case Kind::AtMost: return measured <= expected + tolerance;
+    case Kind::AtLeast: return measured >= expected - tolerance;
+  }
+  return false;
+}
+
+std::string VerifyCheck::rule() const {
+  const std::string u = unit.empty() ? "" : " " + unit;
+  switch (kind) {
+    case Kind::Within: return "within ±" + num(tolerance) + u + " of " + num(expected) + u;
+    case Kind::AtMost: return "at most " + num(expected + tolerance) + u;
+    case Kind::AtLeast: return "at least " + num(expected - tolerance) + u;
+  }
+  return "";
+}
+
+bool VerifyCase::pass() const {
+  for (const VerifyCheck& c : checks)
+    if (!c.pass()) return false;
+  return !checks.empty();
+}
+
+bool VerifyReport::pass() const {
+  for (const VerifyCase& c : cases)
+    if (!c.pass()) return false;
+  return !cases.empty();
+}
+
+const std::vector<std::string>& verify_case_ids() {
+  static const std::vector<std::string> ids = [] {
+    std::vector<std::string> v;
+    for (const auto& [id, fn] : cases()) v.push_back(id);
+    return v;
+  }();
+  return ids;
+}
+
+void check_case_ids(const std::vector<std::string>& only) {
+  for (const std::string& id : only)
+    if (std::find(verify_case_ids().begin(), verify_case_ids().end(), id) == verify_case_ids().end())
+      throw InputError("--only: '" + id + "' is not a case (" + [] {
+        std::string all;
+        for (const std::string& i : verify_case_ids()) all += (all.empty() ? "" : ", ") + i;
+        return all;
+      }() + ")");
+}
+
+VerifyReport run_verify_dem(const VerifyOptions& opt) {
+  check_case_ids(opt.only);
+  std::unique_ptr<tbb::global_control> threads;
+  if (opt.threads > 0)
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, size_t(opt.threads));
+  VerifyReport report;
+  report.quick = opt.quick;
+  const auto start = std::chrono::steady_clock::now();
+  for (const auto& [id, fn] : cases()) {
+    if (!opt.only.empty() && std::find(opt.only.begin(), opt.only.end(), id) == opt.only.end()) continue;
+    opt.log(id + ": running");
+    const auto t0 = std::chrono::steady_clock::now();
+    VerifyCase c = fn(opt);
+    c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    int failed = 0;
+    for (const VerifyCheck& k : c.checks) failed += !k.pass();
+    opt.log(id + ": " + (c.pass() ? "pass" : std::to_string(failed) + " of " + std::to_string(c.checks.size()) + " checks fail") +
+            " (" + num(c.seconds) + " s)");
+    report.cases.push_back(std::move(c));
+  }
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+ordered_json verify_json(const VerifyReport& r) {
+  ordered_json cs = ordered_json::array();
+  for (const VerifyCase& c : r.cases) {
+    ordered_json checks = ordered_json::array();
+    for (const VerifyCheck& k : c.checks)
+      checks.push_back({{"name", k.name},
+                        {"measured", k.measured},
+                        {"expected", k.expected},
+                        {"tolerance", k.tolerance},
+                        {"rule", k.rule()},
+                        {"unit", k.unit},
+                        {"pass", k.pass()}});
+    cs.push_back({{"id", c.id},
+                  {"title", c.title},
+                  {"reference", c.reference},
+                  {"pass", c.pass()},
+                  {"seconds", c.seconds},
+                  {"checks", checks},
+                  {"notes", c.notes}});
+  }
+  return {{"quick", r.quick}, {"pass", r.pass()}, {"seconds", r.seconds}, {"cases", cs}};
+}
+
+}  // namespace sandpic
