@@ -286,11 +286,9 @@ std::string scene_digest(const Scene& s) {
   if (s.mode == Mode::Dem) {
     j.erase("lattice");
   } else {
-    // The lattice reads the device's release rate and water (the order in
-    // which grains land, lattice.arrival), not the rest of the DEM's keys.
     ordered_json device = ordered_json::object();
-    for (const char* key : {"release_rate", "water", "water_density_g_cm3", "water_viscosity_pa_s"})
-      device[key] = j["dem"][key];
+    for (const Field& f : scene_fields())
+      if (f.path.rfind("dem.", 0) == 0 && read_in_mode(f.path, Mode::Lattice)) device[f.path.substr(4)] = f.get(s);
     j["dem"] = device;
   }
   const std::string text = j.dump();
@@ -299,6 +297,24 @@ std::string scene_digest(const Scene& s) {
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)h);
   return buf;
+}
+
+bool read_in_mode(const std::string& path, Mode m) {
+  if (path.rfind("lattice.", 0) == 0) return m == Mode::Lattice;
+  if (path.rfind("dem.", 0) != 0) return true;
+  static const char* device[] = {"dem.release_rate", "dem.water", "dem.water_density_g_cm3", "dem.water_viscosity_pa_s"};
+  return m == Mode::Dem || std::find(std::begin(device), std::end(device), path) != std::end(device);
+}
+
+std::vector<std::string> unread_keys(const Scene& s, const std::vector<std::string>& set_keys) {
+  std::vector<std::string> out;
+  const Scene defaults;
+  for (const Field& f : scene_fields()) {
+    if (read_in_mode(f.path, s.mode)) continue;
+    const bool given = std::find(set_keys.begin(), set_keys.end(), f.path) != set_keys.end();
+    if (given || f.get(s) != f.get(defaults)) out.push_back(f.path);
+  }
+  return out;
 }
 
 Scene with_calibration(const Scene& s) {

@@ -41,6 +41,13 @@ ordered_json to_json(const Scene& s);
 // it names): two runs with one digest and seed give one picture. validate
 // keeps a run while its digest holds.
 std::string scene_digest(const Scene& s);
+// Whether a run in mode m reads the key: the lattice's keys only the lattice,
+// the DEM's only the DEM but for the device's release rate and water (the
+// lattice lands grains by their settling, lattice.arrival); the others both.
+bool read_in_mode(const std::string& path, Mode m);
+// The keys s's mode never reads among `set_keys` (given with --set) and those
+// s holds at other than their default (as pbrt reports unused parameters).
+std::vector<std::string> unread_keys(const Scene& s, const std::vector<std::string>& set_keys);
 // The scene with lattice.calibration's "lattice" values applied (itself when
 // it names no file). Read by the lattice mode only: a DEM run never opens it.
 Scene with_calibration(const Scene& s);

@@ -25,6 +25,7 @@ struct SceneOptions {
   double scale = 1;
   std::vector<std::string> sets;
   int threads = 0;
+  bool one_mode = false, strict = false;
 
   void add_to(CLI::App* cmd) {
     cmd->add_option("scene", scene_path, "scene file (JSON); none: the built-in default scene");
@@ -40,17 +41,28 @@ struct SceneOptions {
   }
 
   // `fallback`: the scene when none is given (the built-in default scene).
+  // The seed options go before --set, so a key given explicitly wins over one
+  // --seed derives (--seed 1 --set physics_seed=2 falls with physics seed 2).
   Scene build(const Scene& fallback = Scene{}) const {
     Scene s = scene_path.empty() ? fallback : load_scene(scene_path);
-    for (const std::string& a : sets) apply_setting(s, a);
-    if (!mode.empty()) apply_setting(s, "mode=" + mode);
     if (seed) s.seed = uint64_t(*seed), s.layout_seed.reset(), s.physics_seed.reset();
     if (layout_seed) s.layout_seed = uint64_t(*layout_seed);
     if (physics_seed) s.physics_seed = uint64_t(*physics_seed);
+    for (const std::string& a : sets) apply_setting(s, a);
+    if (!mode.empty()) apply_setting(s, "mode=" + mode);
+    if (one_mode) report_unread(s);
     if (scale != 1) apply_scale(s, scale);
     validate(s);
     return s;
   }
+
+  // For commands that run the scene in its own mode only (render, bench): a
+  // key that mode never reads is a warning, with --strict an error (exit 2).
+  void check_unread(CLI::App* cmd) {
+    one_mode = true;
+    cmd->add_flag("--strict", strict, "a scene key the mode never reads is an error, not a warning");
+  }
+  void report_unread(const Scene& s) const;
 
   std::string reproduce(const Scene& s) const {
     return "scene " + (scene_path.empty() ? std::string("(default)") : scene_path) + ", layout seed " +

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 #include <opencv2/core/utils/logger.hpp>
@@ -53,6 +54,7 @@ struct RenderCommand {
   void add_to(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("render", "render a scene to a PNG picture");
     scene.add_to(cmd);
+    scene.check_unread(cmd);
     cmd->add_option("-o,--out", out, "output PNG")->required();
     cmd->add_option("--stats", stats, "write statistics (grain counts, timings) as JSON");
     cmd->add_option("--stages", stages, "write the intermediate pictures of paper Fig. 2 into this folder");
@@ -136,13 +138,47 @@ struct SketchCommand {
   }
 };
 
+}  // namespace
+
+void SceneOptions::report_unread(const Scene& s) const {
+  std::vector<std::string> given;
+  for (const std::string& a : sets) given.push_back(a.substr(0, a.find('=')));
+  const std::string mode_name = s.mode == Mode::Dem ? "dem" : "lattice";
+  for (const std::string& key : unread_keys(s, given)) {
+    const std::string what = "scene key '" + key + "' is not read in " + mode_name + " mode";
+    if (strict) throw InputError(what + " (--strict)");
+    std::fprintf(stderr, "sandpic: warning: %s\n", what.c_str());
+  }
+}
+
+namespace {
+
+// docs/scene-reference.md's table of every key, made from the registry (a
+// test checks the page against it): its default, whether --scale multiplies
+// it, its help.
+std::string reference_table() {
+  auto cell = [](std::string v) {
+    std::string out;
+    for (char c : v) out += c == '|' ? std::string("\\|") : std::string(1, c);
+    return out;
+  };
+  std::ostringstream o;
+  o << "| key | default | scaled | meaning |\n| --- | --- | --- | --- |\n";
+  const Scene defaults;
+  for (const Field& f : scene_fields())
+    o << "| `" << f.path << "` | `" << cell(f.get(defaults).dump()) << "` | " << (f.px ? "yes" : "") << " | "
+      << cell(f.help) << " |\n";
+  return o.str();
+}
+
 struct SceneCommand {
-  bool keys = false, list_presets = false;
+  bool keys = false, list_presets = false, reference = false;
   std::string preset;
   void add_to(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("scene", "print the complete default scene as JSON");
     cmd->add_flag("--keys", keys, "list every key with its meaning instead");
     cmd->add_flag("--presets", list_presets, "list the presets of paper §9 instead");
+    cmd->add_flag("--reference", reference, "every key as docs/scene-reference.md's Markdown table instead");
     cmd->add_option("--preset", preset, "print the complete scene a preset makes");
     cmd->callback([this] {
       if (list_presets) {
@@ -151,6 +187,10 @@ struct SceneCommand {
       }
       if (keys) {
         for (const Field& f : scene_fields()) std::cout << f.path << "\t" << f.help << "\n";
+        return;
+      }
+      if (reference) {
+        std::cout << reference_table();
         return;
       }
       Scene s;
@@ -167,6 +207,7 @@ struct BenchCommand {
   void add_to(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("bench", "time the pipeline on a scene: medians of repeated runs");
     scene.add_to(cmd);
+    scene.check_unread(cmd);
     cmd->add_option("--runs", runs, "timed runs (after one warm-up run)")->check(CLI::Range(1, 1000));
     cmd->callback([this] { run(); });
   }
@@ -333,6 +374,13 @@ struct CompareCommand {
     if (ia.size() != ib.size())
       throw InputError(b + " is " + std::to_string(ib.cols) + "x" + std::to_string(ib.rows) + " px but " + a + " is " +
                        std::to_string(ia.cols) + "x" + std::to_string(ia.rows));
+    // Pictures in other colours decode as no sand at all and would score
+    // silhouette and composition 0: refuse instead of answering zeros.
+    for (const auto& [path, img] : {std::pair{a, &ia}, std::pair{b, &ib}})
+      if (cv::countNonZero(decode_classes(*img, s.grains.colors) != kNoSand) == 0)
+        throw InputError(path + " has no pixel in the class colours of " +
+                         (scene_path.empty() ? std::string("the default scene") : scene_path) +
+                         "; give the pictures' scene with --scene");
     const Comparison c = compare_pictures(ia, ib, s.grains.colors, bands, blur);
     ordered_json j;
     j["width"] = c.width;

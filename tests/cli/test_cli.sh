@@ -39,6 +39,22 @@ expect 0 "render again" -- "$BIN" render -o "$T/b.png" --scale 0.25 --threads 1
 if cmp -s "$T/a.png" "$T/b.png"; then ok; else bad "same seed gave other bytes"; fi
 expect 0 "other seed" -- "$BIN" render -o "$T/c.png" --scale 0.25 --seed 7
 
+# A key the mode never reads is named (a warning; with --strict exit 2 and
+# nothing written), and the picture is the default's; an explicit key wins
+# over the one --seed derives.
+expect 0 "unread key" -- "$BIN" render -o "$T/u.png" --scale 0.25 --set dem.cycle_steps=20
+one_line; err_has "warning: scene key 'dem.cycle_steps' is not read in lattice mode"
+if cmp -s "$T/a.png" "$T/u.png"; then ok; else bad "an unread key changed the picture"; fi
+expect 2 "unread key strict" -- "$BIN" render -o "$T/u2.png" --scale 0.25 --set dem.cycle_steps=20 --strict
+one_line; err_has "dem.cycle_steps"; absent "$T/u2.png"
+"$BIN" scene >"$T/every-key.json"
+expect 0 "every key at its default" -- "$BIN" render "$T/every-key.json" -o "$T/u3.png" --scale 0.25 --strict
+if [ ! -s "$T/err" ]; then ok; else bad "a scene of defaults warned: $(cat "$T/err")"; fi
+expect 0 "explicit physics seed" -- "$BIN" render -o "$T/ps1.png" --scale 0.25 --seed 1 --set physics_seed=2
+expect 0 "physics seed option" -- "$BIN" render -o "$T/ps2.png" --scale 0.25 --seed 1 --physics-seed 2
+if cmp -s "$T/ps1.png" "$T/ps2.png" && ! cmp -s "$T/ps1.png" "$T/a.png"; then ok
+else bad "--set physics_seed=2 after --seed 1 was not the picture of physics seed 2"; fi
+
 # compare: JSON with every measure; a picture with itself is identical.
 expect 0 "compare" -- "$BIN" compare "$T/a.png" "$T/c.png" --json
 for k in '"ssim"' '"psnr_db"' '"silhouette_error"' '"composition_error"' '"composition_error_per_band"' '"ssim_blurred"'; do
@@ -52,6 +68,14 @@ one_line; err_has "ramp.png"
 expect 2 "compare missing" -- "$BIN" compare "$T/a.png" "$T/none.png"
 one_line; err_has "none.png"
 if ! cmp -s "$T/a.png" "$T/c.png"; then ok; else bad "another seed gave the same picture"; fi
+
+# Pictures in other colours than the scene's: never zeros, a clear error.
+expect 0 "fig16 render" -- "$BIN" render "$ROOT/examples/fig16.json" -o "$T/f16a.png" --scale 0.25
+expect 0 "fig16 render, other fall" -- "$BIN" render "$ROOT/examples/fig16.json" -o "$T/f16b.png" --scale 0.25 --physics-seed 2
+expect 2 "compare without the scene" -- "$BIN" compare "$T/f16a.png" "$T/f16b.png"
+one_line; err_has "f16a.png"; err_has "--scene"
+expect 0 "compare with the scene" -- "$BIN" compare "$T/f16a.png" "$T/f16b.png" --scene "$ROOT/examples/fig16.json" --json
+if grep -q '"silhouette_error": 0.0,' "$T/out"; then bad "fig16 silhouette error 0: $(cat "$T/out")"; else ok; fi
 
 # Issue 4: every grain's release point and resting place as CSV, and two
 # runs compared grain by grain; bad tables and paths are named, nothing written.

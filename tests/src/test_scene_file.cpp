@@ -255,5 +255,23 @@ TEST(SceneFile, CalibrationFileErrorsNameTheKeyOrFile) {
   std::filesystem::remove(bad);
 }
 
+// Keys a mode never reads: its own section's keys are read, the other's are
+// not but for the device's release rate and water; a key given with --set is
+// named even at its default, a scene's key only when it differs from it.
+TEST(SceneFile, UnreadKeysAreTheOtherModesSection) {
+  EXPECT_TRUE(read_in_mode("dem.cycle_steps", Mode::Dem));
+  EXPECT_FALSE(read_in_mode("dem.cycle_steps", Mode::Lattice));
+  EXPECT_TRUE(read_in_mode("dem.release_rate", Mode::Lattice));
+  EXPECT_FALSE(read_in_mode("lattice.bulk", Mode::Dem));
+  EXPECT_TRUE(read_in_mode("physics.friction", Mode::Dem));
+  Scene s;
+  EXPECT_TRUE(unread_keys(s, {}).empty());
+  EXPECT_EQ(unread_keys(s, {"dem.cycle_steps", "physics.friction"}), std::vector<std::string>{"dem.cycle_steps"});
+  apply_setting(s, "lattice.bulk=1.2");
+  EXPECT_TRUE(unread_keys(s, {}).empty());
+  apply_setting(s, "mode=\"dem\"");
+  EXPECT_EQ(unread_keys(s, {}), std::vector<std::string>{"lattice.bulk"});
+}
+
 }  // namespace
 }  // namespace sandpic
