@@ -56,6 +56,9 @@ class DemRun {
   cv::Mat frame_map() const;
   void record(int32_t id, Vec2 p);
   void make_static(int32_t id, Vec2 p);
+  void make_fixed(int32_t id, Vec2 p);
+  template <class F>
+  void for_each_body(F f) const;
   double surface(double x, double r) const;
   void sample_layers();
   double kinetic_energy_j() const;
@@ -88,7 +91,11 @@ class DemRun {
   std::vector<Vec2> last_;
   std::vector<float> x_, y_;  // settled centre, window px (y down)
 
-  std::vector<int32_t> dynamic_, statics_;  // ids: dynamic lowest first as of the last cycle, then arrivals
+  // ids: dynamic lowest first as of the last cycle, then arrivals; static
+  // bodies (dem.static_bodies) or immovable static spheres; fixed grains
+  // still kept as static spheres.
+  std::vector<int32_t> dynamic_, statics_, still_statics_, fixed_spheres_;
+  double buried_px_ = 0;  // a fixed sphere this far under H_s leaves for the ground
   Arrivals arrivals_;
   std::vector<float> landed_;   // tops of slow dynamic grains, per column, this cycle
   int64_t released_ = 0, inserted_ = 0, settled_ = 0, fixed_ = 0, delayed_ = 0;
@@ -136,6 +143,7 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
   rule_.band_px = s_.dem.static_thickness_mm * px_per_mm(s_);
   const double big_d = 2 * *std::max_element(radius_.begin(), radius_.end());
   rule_.baseline = std::max(1, int(std::lround(s_.dem.slope_baseline_diameters * big_d)));
+  buried_px_ = rule_.band_px + 2 * big_d;
   // Resting on the static layer: the bottom within a quarter of the smallest
   // diameter of H_s (overlap and the outline's rounding to columns).
   rule_.support_px = 0.25 * small_d_;
@@ -179,7 +187,7 @@ void DemRun::release_stage() {
 void DemRun::insert_stage() {
   if (arrivals_.empty() || arrivals_.top().time > t_) return;
   crowding_.clear();
-  for (int32_t id : dynamic_) crowding_.add(world_.position(slot_[size_t(id)]), radius_[in_.grains.cls[size_t(id)]]);
+  for_each_body([&](int32_t id, int slot) { crowding_.add(world_.position(slot), radius_[in_.grains.cls[size_t(id)]]); });
   std::vector<Arrival> later;
   while (!arrivals_.empty() && arrivals_.top().time <= t_) {
     Arrival a = arrivals_.top();
@@ -204,7 +212,7 @@ void DemRun::insert_stage() {
     energy_budget_ += mass_[k] * (0.5 * v.squaredNorm() + water_.gravity_px_s2[k] * y);
   }
   for (const Arrival& a : later) arrivals_.push(a);
-  peak_bodies_ = std::max(peak_bodies_, dynamic_.size());
+  peak_bodies_ = std::max(peak_bodies_, dynamic_.size() + statics_.size());
 }
 
 // A grain no denser than the water never settles: it would float, or hang
@@ -244,12 +252,17 @@ void DemRun::move_stage() {
 
 // Gravity with buoyancy, and drag (physics/water_stage.h). Bullet then
 // solves the contacts.
+template <class F>
+void DemRun::for_each_body(F f) const {
+  for (int32_t id : dynamic_) f(id, slot_[size_t(id)]);
+  for (int32_t id : statics_) f(id, slot_[size_t(id)]);
+}
+
 void DemRun::water_stage() {
-  for (int32_t id : dynamic_) {
-    const int slot = slot_[size_t(id)];
+  for_each_body([&](int32_t id, int slot) {
     const Vec2 v = world_.velocity(slot);
     world_.push(slot, water_stage_.apply(in_.grains.cls[size_t(id)], v) - v, sub_dt_);
-  }
+  });
 }
 
 void DemRun::record(int32_t id, Vec2 p) {
@@ -257,21 +270,48 @@ void DemRun::record(int32_t id, Vec2 p) {
   y_[size_t(id)] = float(H_ - p.y());
 }
 
+// paper §8.1: static grains are "almost immobile ... and also fully
+// controlled by Physx": with dem.static_bodies they stay bodies, so the flow
+// can still push them. (Made immovable, the default, the toe of a heap can no
+// longer spread: on verify-dem's quick heap three-layer stood 5° steeper than
+// all-dynamic; with bodies it equals it.) In bcre the static layer is the
+// height field, as the BCRE model has it.
 void DemRun::make_static(int32_t id, Vec2 p) {
   const int k = in_.grains.cls[size_t(id)];
   const double r = radius_[k];
-  world_.remove_body(slot_[size_t(id)]);
   record(id, p);
   ++settled_;
   heights_.add_static(p.x(), p.y(), r);
-  if (layers_ == Layers::Bcre) {  // BCRE: the static layer is a height field
+  layer_[size_t(id)] = Layer::Static;
+  if (layers_ == Layers::Bcre) {
+    world_.remove_body(slot_[size_t(id)]);
     world_.raise_ground(p, r);
     slot_[size_t(id)] = -1;
-  } else {
-    slot_[size_t(id)] = world_.add_static(k, p);
+  } else if (s_.dem.static_bodies) {
     statics_.push_back(id);
+  } else {  // immovable: a static sphere, fixed later as it is
+    world_.remove_body(slot_[size_t(id)]);
+    slot_[size_t(id)] = world_.add_static(k, p);
+    still_statics_.push_back(id);
   }
-  layer_[size_t(id)] = Layer::Static;
+}
+
+// Algorithm 2, lines 13-21: a fixed grain leaves the simulation. It stays
+// an exact static sphere while bodies may rest on it, and becomes part of the
+// height field only once buried (freeze_stage): the field is the grains'
+// upper outline, which fills the hollows between them, so a body resting in
+// one overlapped it by up to a quarter of its radius and was pushed out
+// (sub-steps 8-16 and 10x the time on the default scene at --scale 0.1).
+void DemRun::make_fixed(int32_t id, Vec2 p) {
+  const int k = in_.grains.cls[size_t(id)];
+  world_.remove_body(slot_[size_t(id)]);
+  record(id, p);
+  heights_.add_static(p.x(), p.y(), radius_[k]);
+  heights_.add_fixed(p.x(), p.y(), radius_[k]);
+  slot_[size_t(id)] = world_.add_static(k, p);
+  fixed_spheres_.push_back(id);
+  layer_[size_t(id)] = Layer::Fixed;
+  ++fixed_;
 }
 
 // Stage (every cycle): paper Algorithm 2, lines 1-12, lowest grains first:
@@ -312,9 +352,14 @@ void DemRun::classify_stage() {
     const double r = radius_[k];
     // A grain buried under the static band (jostled, never quite at rest)
     // is out of reach of the flow, and a wedged one cannot get out: both
-    // join the static layer.
+    // leave the simulation where they are (in bcre: join its static layer).
     const bool trapped = p.y() + r < heights_.hs[size_t(heights_.column(p.x()))] - rule_.band_px ||
                          std::binary_search(wedged.begin(), wedged.end(), slot_[size_t(id)]);
+    if (layers_ == Layers::Three && trapped) {
+      ++settled_;
+      make_fixed(id, p);
+      continue;
+    }
     if (layers_ != Layers::AllDynamic &&
         (trapped || becomes_static(heights_, rule_, p.x(), p.y(), r, moved, rested_[size_t(id)]))) {
       make_static(id, p);
@@ -330,27 +375,50 @@ void DemRun::classify_stage() {
   dynamic_.swap(still);
 }
 
-// Stage (every cycle): Algorithm 2, lines 13-21. A fixed grain leaves the
-// world; the height field under the static band rises to its top.
+// Stage (every cycle): Algorithm 2, lines 13-21. A static grain under the
+// static band becomes fixed (make_fixed); a fixed sphere two large grains
+// deeper than that is out of every body's reach and joins the height field.
 void DemRun::freeze_stage() {
   if (layers_ != Layers::Three) return;
   std::vector<int32_t> still;
   still.reserve(statics_.size());
   for (int32_t id : statics_) {
     const double r = radius_[in_.grains.cls[size_t(id)]];
+    const Vec2 p = world_.position(slot_[size_t(id)]);
+    if (becomes_fixed(heights_, rule_, p.x(), p.y(), r))
+      make_fixed(id, p);
+    else
+      still.push_back(id);
+  }
+  statics_.swap(still);
+  still.clear();
+  for (int32_t id : still_statics_) {
+    const double r = radius_[in_.grains.cls[size_t(id)]];
     const Vec2 p(x_[size_t(id)], H_ - y_[size_t(id)]);
     if (!becomes_fixed(heights_, rule_, p.x(), p.y(), r)) {
       still.push_back(id);
       continue;
     }
-    world_.remove_static(slot_[size_t(id)]);
     heights_.add_fixed(p.x(), p.y(), r);
-    world_.raise_ground(p, r);
-    slot_[size_t(id)] = -1;
+    fixed_spheres_.push_back(id);  // already a static sphere
     layer_[size_t(id)] = Layer::Fixed;
     ++fixed_;
   }
-  statics_.swap(still);
+  still_statics_.swap(still);
+  std::vector<int32_t> near;
+  near.reserve(fixed_spheres_.size());
+  for (int32_t id : fixed_spheres_) {
+    const double r = radius_[in_.grains.cls[size_t(id)]];
+    const Vec2 p(x_[size_t(id)], H_ - y_[size_t(id)]);
+    if (p.y() + r < heights_.lowest_hs(heights_.column(p.x()), rule_.baseline) - buried_px_) {
+      world_.remove_static(slot_[size_t(id)]);
+      world_.raise_ground(p, r);
+      slot_[size_t(id)] = -1;
+    } else {
+      near.push_back(id);
+    }
+  }
+  fixed_spheres_.swap(near);
 }
 
 std::string at(double t, int64_t steps) {
@@ -364,9 +432,9 @@ std::string at(double t, int64_t steps) {
 // and insertion have given) at the most sub-steps.
 void DemRun::guard_stage() {
   StiffnessReading r;
-  for (int32_t id : dynamic_) {
+  for_each_body([&](int32_t id, int slot) {
     const int k = in_.grains.cls[size_t(id)];
-    Vec2 p = world_.position(slot_[size_t(id)]), v = world_.velocity(slot_[size_t(id)]);
+    Vec2 p = world_.position(slot), v = world_.velocity(slot);
     if (!p.allFinite() || !v.allFinite())
       throw SimulationError("a grain's position became NaN" + at(t_, steps_) +
                             "; lower dem.step_diameters or raise dem.max_substeps");
@@ -376,7 +444,7 @@ void DemRun::guard_stage() {
                             "; lower dem.step_diameters or raise dem.max_substeps or dem.solver_iterations");
     r.kinetic += 0.5 * mass_[k] * v.squaredNorm();
     r.settling += 0.5 * mass_[k] * water_.terminal_px_s[k] * water_.terminal_px_s[k];
-  }
+  });
   r.overlap_px = world_.deepest_overlap();
   r.budget = energy_budget_;
   deepest_ = std::max(deepest_, r.overlap_px);
@@ -399,14 +467,13 @@ void DemRun::guard_stage() {
 double DemRun::kinetic_energy_j() const {
   const double m_per_px = 1e-3 / px_per_mm(s_);
   double e = 0;
-  for (int32_t id : dynamic_) {
+  for_each_body([&](int32_t id, int slot) {
     const int k = in_.grains.cls[size_t(id)];
-    const int slot = slot_[size_t(id)];
     const double d = s_.grains.diameter_mm[k] * 1e-3;                                       // m
     const double m = s_.grains.density_g_cm3[k] * 1e3 * std::numbers::pi / 6 * d * d * d;  // kg
     const double v = world_.velocity(slot).norm() * m_per_px, w = world_.spin(slot);
     e += 0.5 * m * v * v + 0.5 * (m * d * d / 10) * w * w;  // a solid sphere: I = m d² / 10
-  }
+  });
   return e;
 }
 
@@ -425,17 +492,17 @@ void DemRun::sample_layers() {
                       {"fixed", fixed_}});
 }
 
-// paper Fig. 14c-d: the grains as they are now. Fixed and static ones where
+// paper Fig. 14c-d: the grains as they are now. Fixed ones where
 // they settled, bodies where Bullet has them, released grains not yet bodies
 // on their way (Eq. 1-2 to the outlet, then straight down at their settling
 // speed, as release_stage schedules them), the rest waiting in the region.
 // Reads the run only: frames never change a picture.
 cv::Mat DemRun::frame_map() const {
   std::vector<float> x(x_), y(y_);
-  for (int32_t id : dynamic_) {
-    const Vec2 p = world_.position(slot_[size_t(id)]);
+  for_each_body([&](int32_t id, int slot) {
+    const Vec2 p = world_.position(slot);
     x[size_t(id)] = float(p.x()), y[size_t(id)] = float(H_ - p.y());
-  }
+  });
   for (int64_t i = 0; i < released_; ++i) {
     const int32_t id = in_.order.grain[size_t(i)];
     if (layer_[size_t(id)] != Layer::Waiting) continue;
@@ -485,7 +552,9 @@ cv::Mat DemRun::layer_map() const {
   std::vector<float> x(x_), y(y_);
   std::vector<uint8_t> value(layer_.size(), 255);
   for (size_t i = 0; i < layer_.size(); ++i) {
-    if (layer_[i] == Layer::Dynamic) {
+    const bool body = layer_[i] == Layer::Dynamic ||
+                      (layer_[i] == Layer::Static && layers_ == Layers::Three && s_.dem.static_bodies);
+    if (body) {
       Vec2 p = world_.position(slot_[i]);
       x[i] = float(p.x()), y[i] = float(H_ - p.y());
     }
@@ -557,7 +626,7 @@ SimResult DemRun::run() {
   }
   progress_.finish();
   const double kinetic_end = kinetic_energy_j();
-  for (int32_t id : dynamic_) record(id, world_.position(slot_[size_t(id)]));
+  for_each_body([&](int32_t id, int slot) { record(id, world_.position(slot)); });
   sample_layers();
 
   SimResult out;

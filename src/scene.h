@@ -193,6 +193,7 @@ struct Scene {
     double slope_margin_deg = 5;       // α from the friction: the grains' own repose angle plus this
     double slope_baseline_diameters = 4;  // θ measured this far to either side (largest grain diameters)
     double static_thickness_mm = 2;    // paper §8.1
+    bool static_bodies = false;        // paper §8.1: static grains stay in the simulation (docs/dem.md)
     double insert_gap_diameters = 4;   // flight is analytic until this far above the pile
     double max_overlap = 1.0;          // divergence: overlap beyond this (small-grain diameters)
     // Stiffness (physics/stiffness.h): an overlap past target_overlap

@@ -628,6 +628,9 @@ std::vector<Field> make_fields() {
            "§8.1's θ is the steepest drop to the static layer this far to either side, in the largest grain's diameters"),
       real("dem.static_thickness_mm", [](S& s) -> double& { return s.dem.static_thickness_mm; }, 0, 1000,
            "thickness of the static layer above the fixed one, mm (§8.1: 2)"),
+      boolean("dem.static_bodies", [](S& s) -> auto& { return s.dem.static_bodies; },
+              "three: static grains stay bodies the flow can push, as §8.1 has them (false: immovable, faster, "
+              "steeper piles)"),
       real("dem.insert_gap_diameters", [](S& s) -> double& { return s.dem.insert_gap_diameters; }, 0.5, 1e4,
            "a falling grain becomes a body this far above the pile (diameters); above, its flight is analytic"),
       real("dem.max_overlap", [](S& s) -> double& { return s.dem.max_overlap; }, 0.01, 10,

@@ -172,6 +172,9 @@ TINY=(--set window.width=60 --set window.height=60 --set region.height=5 --set s
 if [ "$BULLET" = with-bullet ]; then
   expect 0 "dem" -- "$BIN" render -o "$T/dem.png" --mode dem "${TINY[@]}" --stats "$T/dem.json" --stages "$T/dst"
   is_png "$T/dem.png"; is_png "$T/dst/6-layers.png"; is_png "$T/dst/7-layers-end.png"
+  expect 0 "dem static bodies" -- "$BIN" render -o "$T/demb.png" --mode dem "${TINY[@]}" --set dem.static_bodies=true \
+    --stages "$T/dstb" --frames "$T/dfb" --frame-count 3
+  is_png "$T/demb.png"; is_png "$T/dstb/6-layers.png"; is_png "$T/dfb/frame-00002.png"
   if grep -q '"in_picture": 300' "$T/dem.json"; then ok; else bad "dem stats: $(cat "$T/dem.json")"; fi
   echo keep >"$T/keep.png"
   expect 3 "dem divergence" -- "$BIN" render -o "$T/keep.png" --mode dem "${TINY[@]}" --set dem.step_diameters=1 --set dem.max_overlap=0.1 --set dem.max_substeps=1 \

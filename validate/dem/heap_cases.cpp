@@ -176,10 +176,11 @@ VerifyCase heap(const VerifyOptions& opt) {
     // value above the first by more than two. Rolling resistance adds only
     // while sliding does not cap it: a grain in a notch holds to 30° +
     // atan(min(μ, μ_r/2)) (the notch case), so the rise is checked over the
-    // μ_r up to 2μ (at μ 0.1: μ_r 0.2).
+    // μ_r up to 2μ (at μ 0.1: μ_r 0.2); beyond it nothing is predicted,
+    // so neither the rise nor a fall is checked there.
     auto grows = [&](const std::vector<std::vector<double>>& seq, size_t rising, const std::string& what) {
       double worst_drop = 0;
-      for (size_t i = 1; i < seq.size(); ++i)
+      for (size_t i = 1; i < rising; ++i)
         worst_drop = std::max(worst_drop, mean(seq[i - 1]) - mean(seq[i]) - spread(seq[i - 1]) - spread(seq[i]));
       c.checks.push_back(at_most(name + ": " + what + ", largest fall beyond the seed spreads", worst_drop, 0, "°"));
       if (rising < 2) return;

@@ -14,8 +14,10 @@
 namespace sandpic::studio {
 namespace {
 
+// Up to 5 minutes: a guard against a hang, not a timing (a sanitizer build
+// on a loaded machine takes a minute for the DEM render below).
 std::shared_ptr<const RenderJob> wait_done(const Renders& r, int id) {
-  for (int i = 0; i < 6000; ++i) {
+  for (int i = 0; i < 30000; ++i) {
     auto job = r.job(id);
     if (job->done) return job;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
