@@ -7,9 +7,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 namespace sandpic {
-namespace {
 
-std::string esc(const std::string& s) {
+std::string html_escape(const std::string& s) {
   std::string o;
   for (char c : s) {
     switch (c) {
@@ -23,12 +22,15 @@ std::string esc(const std::string& s) {
   return o;
 }
 
-std::string f(const char* fmt, double v) {
+std::string html_number(const char* fmt, double v) {
   if (!std::isfinite(v)) return "–";
   char buf[64];
   std::snprintf(buf, sizeof buf, fmt, v);
   return buf;
 }
+
+namespace {
+
 
 std::string png_uri(const cv::Mat& img) {
   std::vector<unsigned char> png;
@@ -81,21 +83,21 @@ std::string error_time_svg(const Validation& v) {
        "\" height=\"" + std::to_string(H - T - B) + "\" fill=\"none\" stroke=\"#000\"/>\n";
   for (double d = lt0; d <= lt1; ++d) {
     double x = X(std::pow(10, d));
-    s += "<line x1=\"" + f("%.1f", x) + "\" y1=\"" + std::to_string(T) + "\" x2=\"" + f("%.1f", x) + "\" y2=\"" +
-         std::to_string(H - B) + "\" stroke=\"#ddd\"/><text x=\"" + f("%.1f", x - 12) + "\" y=\"" +
+    s += "<line x1=\"" + html_number("%.1f", x) + "\" y1=\"" + std::to_string(T) + "\" x2=\"" + html_number("%.1f", x) + "\" y2=\"" +
+         std::to_string(H - B) + "\" stroke=\"#ddd\"/><text x=\"" + html_number("%.1f", x - 12) + "\" y=\"" +
          std::to_string(H - B + 16) + "\">1e" + std::to_string(int(d)) + " s</text>\n";
   }
   for (int i = 0; i <= 4; ++i) {
     double e = e1 * i / 4, y = Y(e);
-    s += "<line x1=\"" + std::to_string(L) + "\" y1=\"" + f("%.1f", y) + "\" x2=\"" + std::to_string(W - R) +
-         "\" y2=\"" + f("%.1f", y) + "\" stroke=\"#eee\"/><text x=\"6\" y=\"" + f("%.1f", y + 4) + "\">" +
-         f("%.4f", e) + "</text>\n";
+    s += "<line x1=\"" + std::to_string(L) + "\" y1=\"" + html_number("%.1f", y) + "\" x2=\"" + std::to_string(W - R) +
+         "\" y2=\"" + html_number("%.1f", y) + "\" stroke=\"#eee\"/><text x=\"6\" y=\"" + html_number("%.1f", y + 4) + "\">" +
+         html_number("%.4f", e) + "</text>\n";
   }
   for (auto [m, label] : {std::pair{1.0, "noise floor"}, std::pair{1.25, "1.25 × floor"}}) {
     double y = Y(floor * m);
-    s += "<line x1=\"" + std::to_string(L) + "\" y1=\"" + f("%.1f", y) + "\" x2=\"" + std::to_string(W - R) +
-         "\" y2=\"" + f("%.1f", y) + "\" stroke=\"#2a7\" stroke-dasharray=\"5,4\"/><text x=\"" +
-         std::to_string(W - R - 80) + "\" y=\"" + f("%.1f", y - 4) + "\" fill=\"#2a7\">" + label + "</text>\n";
+    s += "<line x1=\"" + std::to_string(L) + "\" y1=\"" + html_number("%.1f", y) + "\" x2=\"" + std::to_string(W - R) +
+         "\" y2=\"" + html_number("%.1f", y) + "\" stroke=\"#2a7\" stroke-dasharray=\"5,4\"/><text x=\"" +
+         std::to_string(W - R - 80) + "\" y=\"" + html_number("%.1f", y - 4) + "\" fill=\"#2a7\">" + label + "</text>\n";
   }
   s += "<text x=\"" + std::to_string(W / 2 - 80) + "\" y=\"" + std::to_string(H - 10) +
        "\">simulate time (log)</text><text x=\"12\" y=\"14\">silhouette error vs the DEM runs</text>\n";
@@ -103,10 +105,10 @@ std::string error_time_svg(const Validation& v) {
     if (!(p.t > 0) || !std::isfinite(p.e)) continue;
     const char* colour = p.group == "lattice" ? "#d22" : p.group == "dem" ? "#222" : p.group == "sweep-lattice" ? "#e88" : "#58c";
     double x = X(p.t), y = Y(p.e);
-    s += "<circle cx=\"" + f("%.1f", x) + "\" cy=\"" + f("%.1f", y) + "\" r=\"5\" fill=\"" + colour + "\"><title>" +
-         esc(p.label) + ": " + f("%.4g", p.t) + " s, error " + f("%.4f", p.e) + "</title></circle>\n";
-    s += "<text x=\"" + f("%.1f", x + 7) + "\" y=\"" + f("%.1f", y - 5) + "\" font-size=\"9\" fill=\"#555\">" +
-         esc(p.label) + "</text>\n";
+    s += "<circle cx=\"" + html_number("%.1f", x) + "\" cy=\"" + html_number("%.1f", y) + "\" r=\"5\" fill=\"" + colour + "\"><title>" +
+         html_escape(p.label) + ": " + html_number("%.4g", p.t) + " s, error " + html_number("%.4f", p.e) + "</title></circle>\n";
+    s += "<text x=\"" + html_number("%.1f", x + 7) + "\" y=\"" + html_number("%.1f", y - 5) + "\" font-size=\"9\" fill=\"#555\">" +
+         html_escape(p.label) + "</text>\n";
   }
   s += "</svg>\n";
   return s;
@@ -119,12 +121,12 @@ std::string validation_html(const Validation& v, const std::string& reproduce) {
       "td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}th{background:#f3f3f3}td.l{text-align:left}"
       ".pics{display:flex;gap:12px;flex-wrap:wrap}.pics figure{margin:0}.pics img{width:420px;image-rendering:pixelated;"
       "border:1px solid #999}.bad{color:#b00}.good{color:#070}</style></head><body>\n";
-  h += "<h1>sandpic validation</h1>\n<p>" + esc(reproduce) + " &middot; " + std::to_string(v.scene.window.width) + "&times;" +
+  h += "<h1>sandpic validation</h1>\n<p>" + html_escape(reproduce) + " &middot; " + std::to_string(v.scene.window.width) + "&times;" +
        std::to_string(v.scene.window.height) + " px &middot; " + std::to_string(v.lattice.grains) + " grains &middot; " +
        std::to_string(v.dem.size()) + " DEM runs (physics seeds " + std::to_string(v.dem.front().physics_seed) + "&ndash;" +
        std::to_string(v.dem.back().physics_seed) + ")</p>\n";
-  h += "<h2>Headline</h2>\n<p>Lattice " + f("%.4g", v.lattice_s) + " s, DEM " + f("%.4g", v.dem_s) +
-       " s (medians of simulate time): the lattice is <b>" + f("%.0f", v.time_ratio) + "&times;</b> faster.</p>\n";
+  h += "<h2>Headline</h2>\n<p>Lattice " + html_number("%.4g", v.lattice_s) + " s, DEM " + html_number("%.4g", v.dem_s) +
+       " s (medians of simulate time): the lattice is <b>" + html_number("%.0f", v.time_ratio) + "&times;</b> faster.</p>\n";
   // With several lattice seeds, their own spread beside the DEM's: a lattice
   // far from the DEM but close to itself is biased, not noisy.
   const size_t seeds = 1 + v.lattice_seeds.size();
@@ -132,9 +134,9 @@ std::string validation_html(const Validation& v, const std::string& reproduce) {
        std::string(seeds > 1 ? "<th>lattice seed to seed</th>" : "") + "<th>error ratio</th></tr>\n";
   for (const MetricRow& m : v.metrics) {
     const bool good = m.ratio <= 1.25;
-    h += "<tr><td class=\"l\">" + m.name + "</td><td>" + f("%.5f", m.lattice) + "</td><td>" + f("%.5f", m.floor) +
-         "</td>" + (seeds > 1 ? "<td>" + f("%.5f", m.spread) + "</td>" : "") + "<td class=\"" +
-         (good ? "good" : "bad") + "\">" + f("%.3f", m.ratio) + "</td></tr>\n";
+    h += "<tr><td class=\"l\">" + m.name + "</td><td>" + html_number("%.5f", m.lattice) + "</td><td>" + html_number("%.5f", m.floor) +
+         "</td>" + (seeds > 1 ? "<td>" + html_number("%.5f", m.spread) + "</td>" : "") + "<td class=\"" +
+         (good ? "good" : "bad") + "\">" + html_number("%.3f", m.ratio) + "</td></tr>\n";
   }
   h += "</table>\n<p>error ratio: lattice-vs-DEM error over the mean DEM-vs-DEM error (1 &minus; SSIM for the SSIMs, "
        "the mean squared difference for PSNR); 1 means the preview is as close to the physics as two physical runs "
@@ -146,8 +148,8 @@ std::string validation_html(const Validation& v, const std::string& reproduce) {
        "</p>\n";
   h += "<h2>Pictures</h2>\n<div class=\"pics\">\n";
   auto fig = [&](const cv::Mat& img, const std::string& caption) {
-    h += "<figure><img class=\"pic\" alt=\"" + esc(caption) + "\" src=\"" + png_uri(img) + "\"><figcaption>" +
-         esc(caption) + "</figcaption></figure>\n";
+    h += "<figure><img class=\"pic\" alt=\"" + html_escape(caption) + "\" src=\"" + png_uri(img) + "\"><figcaption>" +
+         html_escape(caption) + "</figcaption></figure>\n";
   };
   fig(v.lattice.picture, "lattice");
   fig(v.dem.front().picture, "DEM, physics seed " + std::to_string(v.dem.front().physics_seed));
@@ -158,12 +160,12 @@ std::string validation_html(const Validation& v, const std::string& reproduce) {
        "<th>SSIM blurred</th><th>PSNR dB</th></tr>\n";
   auto row = [&](const ValidationRun& r, const std::string& name) {
     if (!r.skipped.empty()) {
-      h += "<tr><td class=\"l\">" + esc(name) + "</td><td colspan=\"6\" class=\"l\">" + esc(r.skipped) + "</td></tr>\n";
+      h += "<tr><td class=\"l\">" + html_escape(name) + "</td><td colspan=\"6\" class=\"l\">" + html_escape(r.skipped) + "</td></tr>\n";
       return;
     }
-    h += "<tr><td class=\"l\">" + esc(name) + "</td><td>" + f("%.4g", r.simulate_s) + "</td><td>" +
-         f("%.5f", r.mean.silhouette_error) + "</td><td>" + f("%.5f", r.mean.composition_error) + "</td><td>" +
-         f("%.4f", r.mean.ssim) + "</td><td>" + f("%.4f", r.mean.ssim_blurred) + "</td><td>" + f("%.2f", r.mean.psnr_db) +
+    h += "<tr><td class=\"l\">" + html_escape(name) + "</td><td>" + html_number("%.4g", r.simulate_s) + "</td><td>" +
+         html_number("%.5f", r.mean.silhouette_error) + "</td><td>" + html_number("%.5f", r.mean.composition_error) + "</td><td>" +
+         html_number("%.4f", r.mean.ssim) + "</td><td>" + html_number("%.4f", r.mean.ssim_blurred) + "</td><td>" + html_number("%.2f", r.mean.psnr_db) +
          "</td></tr>\n";
   };
   row(v.lattice, "lattice (as the scene says)");
@@ -171,12 +173,12 @@ std::string validation_html(const Validation& v, const std::string& reproduce) {
   h += "</table>\n<p>Each run against every DEM run of the ensemble, means. DEM runs:</p><table><tr><th>run</th>"
        "<th>physics seed</th><th>simulate s</th><th>kept from before</th></tr>\n";
   for (const ValidationRun& d : v.dem)
-    h += "<tr><td class=\"l\">" + esc(d.label) + "</td><td>" + std::to_string(d.physics_seed) + "</td><td>" +
-         f("%.4g", d.simulate_s) + "</td><td>" + (d.cached ? "yes" : "no") + "</td></tr>\n";
+    h += "<tr><td class=\"l\">" + html_escape(d.label) + "</td><td>" + std::to_string(d.physics_seed) + "</td><td>" +
+         html_number("%.4g", d.simulate_s) + "</td><td>" + (d.cached ? "yes" : "no") + "</td></tr>\n";
   h += "</table>\n";
   if (!v.notes.empty()) {
     h += "<h2>Notes</h2><ul>\n";
-    for (auto& n : v.notes) h += "<li>" + esc(n) + "</li>\n";
+    for (auto& n : v.notes) h += "<li>" + html_escape(n) + "</li>\n";
     h += "</ul>\n";
   }
   // An embedded picture that fails to decode is a broken report: say so on

@@ -127,8 +127,7 @@ VerifyCase restitution(const VerifyOptions&) {
     if (e < 1)
       c.checks.push_back(within("e = " + std::to_string(e).substr(0, 3) + ": rebound height", apex, e * e * h0,
                                 0.05 * e * e * h0, "px"));
-    else
-    {  // single precision: 1e-6 of the height a bounce
+    else {  // single precision: 1e-6 of the height a bounce
       c.checks.push_back({"e = 1: highest of 100 rebounds over the drop height", "", highest / h0, 1, 1e-4,
                           VerifyCheck::Kind::AtMost});
       c.checks.push_back({"e = 1: lowest of 100 rebounds over the drop height", "", lowest / h0, 1, 0.01,

@@ -12,19 +12,6 @@
 namespace sandpic {
 namespace {
 
-std::string esc(const std::string& s) {
-  std::string o;
-  for (char c : s) o += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '"' ? "&quot;" : std::string(1, c);
-  return o;
-}
-
-std::string num(const char* f, double v) {
-  if (!std::isfinite(v)) return "–";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 // Round limits for an axis: [lo, hi] widened to a step of 1, 2 or 5 × 10^k.
 std::pair<double, double> nice(double lo, double hi) {
   if (!(hi > lo)) hi = lo + 1;
@@ -49,37 +36,37 @@ std::string svg(const VerifyPlot& p) {
   auto Y = [&](double y) { return H - B - (y - y0) / (y1 - y0) * (H - T - B); };
   std::string o = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(W) + "\" height=\"" +
                   std::to_string(H) + "\" font-family=\"sans-serif\" font-size=\"11\">\n<text x=\"" + std::to_string(L) +
-                  "\" y=\"16\" font-weight=\"bold\">" + esc(p.title) + "</text>\n";
+                  "\" y=\"16\" font-weight=\"bold\">" + html_escape(p.title) + "</text>\n";
   for (int i = 0; i <= 5; ++i) {
     const double x = x0 + (x1 - x0) * i / 5, y = y0 + (y1 - y0) * i / 5;
-    o += "<line x1=\"" + num("%.1f", X(x)) + "\" y1=\"" + std::to_string(T) + "\" x2=\"" + num("%.1f", X(x)) + "\" y2=\"" +
-         std::to_string(H - B) + "\" stroke=\"#eee\"/><text x=\"" + num("%.1f", X(x) - 10) + "\" y=\"" +
-         std::to_string(H - B + 14) + "\">" + num("%.4g", x) + "</text>\n";
-    o += "<line x1=\"" + std::to_string(L) + "\" y1=\"" + num("%.1f", Y(y)) + "\" x2=\"" + std::to_string(W - R) + "\" y2=\"" +
-         num("%.1f", Y(y)) + "\" stroke=\"#eee\"/><text x=\"4\" y=\"" + num("%.1f", Y(y) + 4) + "\">" + num("%.4g", y) +
+    o += "<line x1=\"" + html_number("%.1f", X(x)) + "\" y1=\"" + std::to_string(T) + "\" x2=\"" + html_number("%.1f", X(x)) + "\" y2=\"" +
+         std::to_string(H - B) + "\" stroke=\"#eee\"/><text x=\"" + html_number("%.1f", X(x) - 10) + "\" y=\"" +
+         std::to_string(H - B + 14) + "\">" + html_number("%.4g", x) + "</text>\n";
+    o += "<line x1=\"" + std::to_string(L) + "\" y1=\"" + html_number("%.1f", Y(y)) + "\" x2=\"" + std::to_string(W - R) + "\" y2=\"" +
+         html_number("%.1f", Y(y)) + "\" stroke=\"#eee\"/><text x=\"4\" y=\"" + html_number("%.1f", Y(y) + 4) + "\">" + html_number("%.4g", y) +
          "</text>\n";
   }
   o += "<rect x=\"" + std::to_string(L) + "\" y=\"" + std::to_string(T) + "\" width=\"" + std::to_string(W - L - R) +
        "\" height=\"" + std::to_string(H - T - B) + "\" fill=\"none\" stroke=\"#000\"/>\n";
-  o += "<text x=\"" + std::to_string(L + 80) + "\" y=\"" + std::to_string(H - 8) + "\">" + esc(p.x_label) +
-       "</text><text x=\"4\" y=\"" + std::to_string(T - 4) + "\">" + esc(p.y_label) + "</text>\n";
+  o += "<text x=\"" + std::to_string(L + 80) + "\" y=\"" + std::to_string(H - 8) + "\">" + html_escape(p.x_label) +
+       "</text><text x=\"4\" y=\"" + std::to_string(T - 4) + "\">" + html_escape(p.y_label) + "</text>\n";
   for (size_t k = 0; k < p.series.size(); ++k) {
     const PlotSeries& s = p.series[k];
     const char* c = kColours[k % 8];
     if (s.points) {
       for (size_t i = 0; i < s.x.size(); ++i)
         if (std::isfinite(s.y[i]))
-          o += "<circle cx=\"" + num("%.1f", X(s.x[i])) + "\" cy=\"" + num("%.1f", Y(s.y[i])) + "\" r=\"3.5\" fill=\"" + c +
-               "\"><title>" + esc(s.label) + ": " + num("%.4g", s.x[i]) + ", " + num("%.4g", s.y[i]) + "</title></circle>\n";
+          o += "<circle cx=\"" + html_number("%.1f", X(s.x[i])) + "\" cy=\"" + html_number("%.1f", Y(s.y[i])) + "\" r=\"3.5\" fill=\"" + c +
+               "\"><title>" + html_escape(s.label) + ": " + html_number("%.4g", s.x[i]) + ", " + html_number("%.4g", s.y[i]) + "</title></circle>\n";
     } else {
       std::string pts;
       for (size_t i = 0; i < s.x.size(); ++i)
-        if (std::isfinite(s.y[i])) pts += num("%.1f", X(s.x[i])) + "," + num("%.1f", Y(s.y[i])) + " ";
+        if (std::isfinite(s.y[i])) pts += html_number("%.1f", X(s.x[i])) + "," + html_number("%.1f", Y(s.y[i])) + " ";
       o += "<polyline fill=\"none\" stroke=\"" + std::string(c) + "\" stroke-width=\"1.6\" points=\"" + pts + "\"/>\n";
     }
     const int ly = T + 14 + 16 * int(k);
     o += "<rect x=\"" + std::to_string(W - R + 10) + "\" y=\"" + std::to_string(ly - 8) + "\" width=\"10\" height=\"10\" fill=\"" +
-         c + "\"/><text x=\"" + std::to_string(W - R + 24) + "\" y=\"" + std::to_string(ly + 1) + "\">" + esc(s.label) +
+         c + "\"/><text x=\"" + std::to_string(W - R + 24) + "\" y=\"" + std::to_string(ly + 1) + "\">" + html_escape(s.label) +
          "</text>\n";
   }
   return o + "</svg>\n";
@@ -100,27 +87,27 @@ std::string verify_html(const VerifyReport& r) {
   h += "<h1>sandpic verify-dem" + std::string(r.quick ? " --quick" : "") + "</h1>\n<p class=\"" +
        (r.pass() ? "pass\">every case passes" : "fail\">" + std::to_string(failed) + " of " + std::to_string(r.cases.size()) +
                                                      " cases fail") +
-       " &middot; " + num("%.0f", r.seconds) + " s</p>\n<table><tr><th>case</th><th>checks</th><th>result</th><th>s</th></tr>\n";
+       " &middot; " + html_number("%.0f", r.seconds) + " s</p>\n<table><tr><th>case</th><th>checks</th><th>result</th><th>s</th></tr>\n";
   for (const VerifyCase& c : r.cases) {
     int bad = 0;
     for (const VerifyCheck& k : c.checks) bad += !k.pass();
-    h += "<tr><td class=\"l\"><a href=\"#" + c.id + "\">" + esc(c.title) + "</a></td><td>" + std::to_string(c.checks.size()) +
+    h += "<tr><td class=\"l\"><a href=\"#" + c.id + "\">" + html_escape(c.title) + "</a></td><td>" + std::to_string(c.checks.size()) +
          "</td><td class=\"" + (c.pass() ? "pass\">pass" : "fail\">" + std::to_string(bad) + " fail") + "</td><td>" +
-         num("%.0f", c.seconds) + "</td></tr>\n";
+         html_number("%.0f", c.seconds) + "</td></tr>\n";
   }
   h += "</table>\n";
   for (const VerifyCase& c : r.cases) {
-    h += "<h2 id=\"" + c.id + "\">" + esc(c.title) + " <span class=\"" + (c.pass() ? "pass\">pass" : "fail\">fail") +
-         "</span></h2>\n<p>Expected: " + esc(c.reference) + ".</p>\n<table><tr><th>check</th><th>measured</th><th>expected"
+    h += "<h2 id=\"" + c.id + "\">" + html_escape(c.title) + " <span class=\"" + (c.pass() ? "pass\">pass" : "fail\">fail") +
+         "</span></h2>\n<p>Expected: " + html_escape(c.reference) + ".</p>\n<table><tr><th>check</th><th>measured</th><th>expected"
          "</th><th>result</th></tr>\n";
     for (const VerifyCheck& k : c.checks)
-      h += "<tr><td class=\"l\">" + esc(k.name) + "</td><td>" + num("%.4g", k.measured) + (k.unit.empty() ? "" : " " + esc(k.unit)) +
-           "</td><td class=\"l\">" + esc(k.rule()) + "</td><td class=\"" + (k.pass() ? "pass\">pass" : "fail\">fail") +
+      h += "<tr><td class=\"l\">" + html_escape(k.name) + "</td><td>" + html_number("%.4g", k.measured) + (k.unit.empty() ? "" : " " + html_escape(k.unit)) +
+           "</td><td class=\"l\">" + html_escape(k.rule()) + "</td><td class=\"" + (k.pass() ? "pass\">pass" : "fail\">fail") +
            "</td></tr>\n";
     h += "</table>\n";
     if (!c.notes.empty()) {
       h += "<ul>";
-      for (const std::string& n : c.notes) h += "<li>" + esc(n) + "</li>";
+      for (const std::string& n : c.notes) h += "<li>" + html_escape(n) + "</li>";
       h += "</ul>\n";
     }
     h += "<div class=\"plots\">";
@@ -131,8 +118,8 @@ std::string verify_html(const VerifyReport& r) {
       for (const auto& [caption, img] : c.pictures) {
         std::vector<unsigned char> png;
         if (img.empty() || !cv::imencode(".png", img, png)) continue;
-        h += "<figure><img alt=\"" + esc(caption) + "\" src=\"data:image/png;base64," + base64(png) + "\"><figcaption>" +
-             esc(caption) + "</figcaption></figure>";
+        h += "<figure><img alt=\"" + html_escape(caption) + "\" src=\"data:image/png;base64," + base64(png) + "\"><figcaption>" +
+             html_escape(caption) + "</figcaption></figure>";
       }
       h += "</div>\n";
     }
