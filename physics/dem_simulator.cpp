@@ -50,6 +50,7 @@ class DemRun {
   void set_substeps(int n);
   void classify_stage();
   void freeze_stage();
+  void wake_stage();
   void guard_stage();
   void frame_stage();
   void run_on_stage();
@@ -92,13 +93,14 @@ class DemRun {
   std::vector<float> x_, y_;  // settled centre, window px (y down)
 
   // ids: dynamic lowest first as of the last cycle, then arrivals; static
-  // bodies (dem.static_bodies) or immovable static spheres; fixed grains
-  // still kept as static spheres.
+  // bodies (dem.static_bodies, within reach of the flow) and immovable
+  // static spheres; fixed grains still kept as static spheres.
   std::vector<int32_t> dynamic_, statics_, still_statics_, fixed_spheres_;
   double buried_px_ = 0;  // a fixed sphere this far under H_s leaves for the ground
   Arrivals arrivals_;
-  std::vector<float> landed_;   // tops of slow dynamic grains, per column, this cycle
+  std::vector<float> landed_;   // tops of slow dynamic grains and static bodies, per column, this cycle
   int64_t released_ = 0, inserted_ = 0, settled_ = 0, fixed_ = 0, delayed_ = 0;
+  int64_t static_sleeps_ = 0, static_wakes_ = 0;  // wake_stage: static bodies made spheres, and back
   int64_t resting_ = 0;  // bodies at rest after the last cycle
   double t_ = 0, energy_budget_ = 0, deepest_ = 0;
   double run_on_end_ = -1, run_on_deepest_ = 0;  // dem.run_on_s: when it ends, the deepest overlap since the last sample
@@ -271,11 +273,12 @@ void DemRun::record(int32_t id, Vec2 p) {
 }
 
 // paper §8.1: static grains are "almost immobile ... and also fully
-// controlled by Physx": with dem.static_bodies they stay bodies, so the flow
-// can still push them. (Made immovable, the default, the toe of a heap can no
-// longer spread: on verify-dem's quick heap three-layer stood 5° steeper than
-// all-dynamic; with bodies it equals it.) In bcre the static layer is the
-// height field, as the BCRE model has it.
+// controlled by Physx": with dem.static_bodies they stay bodies, so the
+// flow can still push them (with dem.static_reach_diameters, wake_stage
+// makes those far from it immovable until it comes near). Made immovable,
+// the default, the toe of a heap can no longer spread: on verify-dem's quick
+// heap three-layer stood 5° steeper than all-dynamic. In bcre the static
+// layer is the height field, as the BCRE model has it.
 void DemRun::make_static(int32_t id, Vec2 p) {
   const int k = in_.grains.cls[size_t(id)];
   const double r = radius_[k];
@@ -373,6 +376,15 @@ void DemRun::classify_stage() {
     resting_ += rested_[size_t(id)] > 0;
   }
   dynamic_.swap(still);
+  // Static bodies can be pushed up (light grains over heavy ones that sink
+  // through them): the surface for insertion is where they are now, not
+  // where they came to rest. (With their resting tops alone, arrivals were
+  // put inside them and delayed for minutes: density 100:1 stalled.)
+  for (int32_t id : statics_) {
+    const Vec2 p = world_.position(slot_[size_t(id)]);
+    int j = std::clamp(int(std::lround(p.x())), 0, W_);
+    landed_[size_t(j)] = std::max(landed_[size_t(j)], float(p.y() + radius_[in_.grains.cls[size_t(id)]]));
+  }
 }
 
 // Stage (every cycle): Algorithm 2, lines 13-21. A static grain under the
@@ -419,6 +431,61 @@ void DemRun::freeze_stage() {
     }
   }
   fixed_spheres_.swap(near);
+}
+
+// Stage (every cycle, dem.static_bodies with dem.static_reach_diameters):
+// a static body with no dynamic grain within reach rests as an immovable
+// sphere; one that a dynamic grain comes near is a body again. A speed
+// lever, not the default: every static body solved at every step cost 4.4x
+// the immovable statics' time on the default scene at --scale 0.2, a reach
+// of 4 largest diameters 1.9x; but a sphere cannot yield to the slow
+// settling all-dynamic piles go through: verify-dem's quick heap then
+// differed from all-dynamic by 1.5-2.0 deg (mean of 2 seeds; one seed 3.3,
+// 2 diameters up to 6; docs/notebook/2026-12-03-static-reach.md).
+void DemRun::wake_stage() {
+  if (layers_ != Layers::Three || !s_.dem.static_bodies || !(s_.dem.static_reach_diameters > 0)) return;
+  const double reach = s_.dem.static_reach_diameters * 2 * *std::max_element(radius_.begin(), radius_.end());
+  // Dynamic bodies bucketed by columns of the reach's width.
+  const int cells = int(std::ceil((W_ + 1) / reach)) + 1;
+  std::vector<std::vector<Vec2>> near(size_t(std::max(cells, 1)));
+  auto cell = [&](double x) { return std::clamp(int(std::floor(std::max(x, 0.0) / reach)), 0, cells - 1); };
+  for (int32_t id : dynamic_) {
+    const Vec2 p = world_.position(slot_[size_t(id)]);
+    near[size_t(cell(p.x()))].push_back(p);
+  }
+  auto reached = [&](Vec2 p) {
+    const int c = cell(p.x());
+    for (int j = std::max(0, c - 1); j <= std::min(cells - 1, c + 1); ++j)
+      for (const Vec2& q : near[size_t(j)])
+        if ((q - p).squaredNorm() <= reach * reach) return true;
+    return false;
+  };
+  std::vector<int32_t> bodies, spheres;
+  for (int32_t id : statics_) {
+    const Vec2 p = world_.position(slot_[size_t(id)]);
+    if (reached(p)) {
+      bodies.push_back(id);
+      continue;
+    }
+    record(id, p);
+    world_.remove_body(slot_[size_t(id)]);
+    slot_[size_t(id)] = world_.add_static(in_.grains.cls[size_t(id)], p);
+    spheres.push_back(id);
+    ++static_sleeps_;
+  }
+  for (int32_t id : still_statics_) {
+    const Vec2 p(x_[size_t(id)], H_ - y_[size_t(id)]);
+    if (!reached(p)) {
+      spheres.push_back(id);
+      continue;
+    }
+    world_.remove_static(slot_[size_t(id)]);
+    slot_[size_t(id)] = world_.add_body(in_.grains.cls[size_t(id)], p, Vec2(0, 0));
+    bodies.push_back(id);
+    ++static_wakes_;
+  }
+  statics_.swap(bodies);
+  still_statics_.swap(spheres);
 }
 
 std::string at(double t, int64_t steps) {
@@ -551,15 +618,11 @@ void DemRun::run_on_stage() {
 cv::Mat DemRun::layer_map() const {
   std::vector<float> x(x_), y(y_);
   std::vector<uint8_t> value(layer_.size(), 255);
-  for (size_t i = 0; i < layer_.size(); ++i) {
-    const bool body = layer_[i] == Layer::Dynamic ||
-                      (layer_[i] == Layer::Static && layers_ == Layers::Three && s_.dem.static_bodies);
-    if (body) {
-      Vec2 p = world_.position(slot_[i]);
-      x[i] = float(p.x()), y[i] = float(H_ - p.y());
-    }
-    value[i] = layer_[i] == Layer::Waiting ? 255 : uint8_t(layer_[i]) - 1;
-  }
+  for_each_body([&](int32_t id, int slot) {
+    const Vec2 p = world_.position(slot);
+    x[size_t(id)] = float(p.x()), y[size_t(id)] = float(H_ - p.y());
+  });
+  for (size_t i = 0; i < layer_.size(); ++i) value[i] = layer_[i] == Layer::Waiting ? 255 : uint8_t(layer_[i]) - 1;
   cv::Mat codes = class_map_from_grains(W_, H_, x, y, value, 1.0, 255);
   cv::Mat img(H_, W_, CV_8UC3, cv::Scalar(255, 255, 255));
   const cv::Vec3b colour[3] = {{40, 40, 220}, {220, 120, 40}, {20, 20, 20}};  // BGR
@@ -593,6 +656,7 @@ SimResult DemRun::run() {
     if (steps_ % cycle) continue;
     classify_stage();
     freeze_stage();
+    wake_stage();
     guard_stage();
     if (samples_.size() < 100000 && steps_ % (cycle * 10) == 0) sample_layers();
     if (in_.stages && layer_snapshot_.empty() && inserted_ >= n_ / 2) layer_snapshot_ = layer_map();  // half in
@@ -648,6 +712,10 @@ SimResult DemRun::run() {
   out.stats["steps"] = steps_;
   out.stats["simulated_s"] = t_;
   out.stats["peak_bodies"] = peak_bodies_;
+  if (layers_ == Layers::Three && s_.dem.static_bodies) {
+    out.stats["static_sleeps"] = static_sleeps_;
+    out.stats["static_wakes"] = static_wakes_;
+  }
   out.stats["insertions_delayed"] = delayed_;
   out.stats["deepest_overlap_px"] = deepest_;
   out.stats["deepest_overlap_diameters"] = deepest_ / small_d_;

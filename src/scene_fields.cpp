@@ -631,6 +631,9 @@ std::vector<Field> make_fields() {
       boolean("dem.static_bodies", [](S& s) -> auto& { return s.dem.static_bodies; },
               "three: static grains stay bodies the flow can push, as §8.1 has them (false: immovable, faster, "
               "steeper piles)"),
+      real("dem.static_reach_diameters", [](S& s) -> double& { return s.dem.static_reach_diameters; }, 0, 1e6,
+           "with dem.static_bodies: a static grain is a body only while a dynamic grain is within this many "
+           "largest-grain diameters, otherwise an immovable sphere: faster, steeper piles (0: no limit)"),
       real("dem.insert_gap_diameters", [](S& s) -> double& { return s.dem.insert_gap_diameters; }, 0.5, 1e4,
            "a falling grain becomes a body this far above the pile (diameters); above, its flight is analytic"),
       real("dem.max_overlap", [](S& s) -> double& { return s.dem.max_overlap; }, 0.01, 10,

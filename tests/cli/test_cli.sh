@@ -175,6 +175,13 @@ if [ "$BULLET" = with-bullet ]; then
   expect 0 "dem static bodies" -- "$BIN" render -o "$T/demb.png" --mode dem "${TINY[@]}" --set dem.static_bodies=true \
     --stages "$T/dstb" --frames "$T/dfb" --frame-count 3
   is_png "$T/demb.png"; is_png "$T/dstb/6-layers.png"; is_png "$T/dfb/frame-00002.png"
+  # Static grains out of the flow's reach rest as spheres: the layer pictures
+  # and the grain count still see them where they are.
+  expect 0 "dem static reach" -- "$BIN" render -o "$T/demr.png" --mode dem "${TINY[@]}" --set dem.static_bodies=true \
+    --set dem.static_reach_diameters=1 --stats "$T/demr.json" --stages "$T/dstr"
+  is_png "$T/dstr/7-layers-end.png"
+  if grep -q '"in_picture": 300' "$T/demr.json" && grep -q '"static_sleeps": [1-9]' "$T/demr.json"; then ok
+  else bad "dem static reach stats: $(cat "$T/demr.json")"; fi
   if grep -q '"in_picture": 300' "$T/dem.json"; then ok; else bad "dem stats: $(cat "$T/dem.json")"; fi
   echo keep >"$T/keep.png"
   expect 3 "dem divergence" -- "$BIN" render -o "$T/keep.png" --mode dem "${TINY[@]}" --set dem.step_diameters=1 --set dem.max_overlap=0.1 --set dem.max_substeps=1 \

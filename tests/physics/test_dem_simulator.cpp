@@ -72,9 +72,12 @@ TEST(DemSimulator, PileSteepensWithFriction) {
 }
 
 // paper §8.1: the static layer is "fully controlled by Physx". With
-// dem.static_bodies its grains stay bodies the flow can push, and a heap
-// poured from a point (480 grains, friction 0.1) stands as all-dynamic's
-// does; made immovable they stood 30.3° against 25.3° on this heap.
+// dem.static_bodies its grains stay bodies the flow can push. Within reach
+// of every grain they are solved as all-dynamic's are, so a heap poured from
+// a point (480 grains, friction 0.1, no grain deep enough to be fixed)
+// stands as all-dynamic's does; made immovable they stood 5° steeper. With
+// dem.static_reach_diameters those away from the flow rest as spheres, and
+// wake when it comes near.
 TEST(DemSimulator, StaticBodiesPileAsAllDynamic) {
   Scene s = pile_scene();
   s.window = {120, 60};
@@ -83,17 +86,29 @@ TEST(DemSimulator, StaticBodiesPileAsAllDynamic) {
   s.init.cell_height = 4;
   s.mode = Mode::Dem;
   s.physics.friction = 0.1;
-  auto angle = [&](Layers l, bool bodies) {
+  ordered_json backend;
+  auto angle = [&](Layers l, bool bodies, double reach) {
     Scene v = s;
     v.dem.layers = l;
     v.dem.static_bodies = bodies;
+    v.dem.static_reach_diameters = reach;
     RunResult r = run(v);
     EXPECT_EQ(r.stats["grains"]["in_picture"], r.stats["grains"]["total"]);
+    backend = r.stats["backend"];
     return heap_angle_deg(silhouette(r.class_map));
   };
-  const double all = angle(Layers::AllDynamic, false), bodies = angle(Layers::Three, true);
-  std::printf("heap: all-dynamic %.1f°, three with static bodies %.1f°\n", all, bodies);
-  EXPECT_NEAR(bodies, all, 2.0);
+  const double all = angle(Layers::AllDynamic, false, 0), immovable = angle(Layers::Three, false, 0);
+  const double bodies = angle(Layers::Three, true, 0);
+  EXPECT_EQ(backend["static_sleeps"].get<int64_t>(), 0);
+  const double reach = angle(Layers::Three, true, 4);
+  std::printf("heap: all-dynamic %.1f°, three: static bodies %.1f°, within 4 diameters of the flow %.1f° (%lld sleeps, "
+              "%lld wakes), immovable %.1f°\n",
+              all, bodies, reach, (long long)backend["static_sleeps"].get<int64_t>(),
+              (long long)backend["static_wakes"].get<int64_t>(), immovable);
+  EXPECT_NEAR(bodies, all, 0.5);
+  EXPECT_GT(immovable, all + 2);
+  EXPECT_GT(backend["static_sleeps"].get<int64_t>(), 0);
+  EXPECT_GT(backend["static_wakes"].get<int64_t>(), 0);
 }
 
 // The default settings: a grain becomes static only where the static layer
