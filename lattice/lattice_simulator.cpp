@@ -12,11 +12,6 @@
 
 namespace sandpic {
 
-double repose_angle_deg(const Scene& s, int k) {
-  if (s.lattice.repose_deg) return (*s.lattice.repose_deg)[k];
-  return std::atan(s.lattice.repose_gain[k] * s.physics.friction) * 180 / std::numbers::pi;
-}
-
 double lattice_area_px(const Scene& s, int k) { return grain_area_px(s, k) * s.lattice.bulk; }
 
 SlopeRule make_slope_rule(double degrees, double rise_px, double column_px, double runout_px) {

@@ -10,9 +10,7 @@
 namespace sandpic {
 
 // paper §7, Fig. 9: the angle of repose grows with friction, and big grains
-// pile steeper than small ones: tan θ_k = repose_gain_k · friction, unless
-// lattice.repose_deg sets θ_k directly.
-double repose_angle_deg(const Scene& s, int k);
+// pile steeper than small ones (repose_angle_deg, src/scene.h).
 SlopeRule slope_rule(const Scene& s, int k);
 // Area a grain of class k takes in the lattice's pile: grain_area_px · lattice.bulk.
 double lattice_area_px(const Scene& s, int k);

@@ -14,6 +14,11 @@ double px_per_mm(const Scene& s) { return 1.0 / s.units.mm_per_pixel; }
 
 double grain_diameter_px(const Scene& s, int k) { return s.grains.diameter_mm[k] * px_per_mm(s); }
 
+double repose_angle_deg(const Scene& s, int k) {
+  if (s.lattice.repose_deg) return (*s.lattice.repose_deg)[k];
+  return std::atan(s.lattice.repose_gain[k] * s.physics.friction) * 180 / std::numbers::pi;
+}
+
 double grain_area_px(const Scene& s, int k) {
   double d = grain_diameter_px(s, k);
   return std::numbers::pi / 4 * d * d / s.units.packing;

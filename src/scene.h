@@ -230,5 +230,9 @@ double px_per_mm(const Scene& s);
 // a big grain covers four times a small one, in both modes.
 double grain_area_px(const Scene& s, int k);
 double grain_diameter_px(const Scene& s, int k);
+// paper §7, Fig. 9: the angle of repose of class k that the lattice piles
+// at, and the calibration and validation start from: tan θ_k =
+// lattice.repose_gain_k · physics.friction, unless lattice.repose_deg sets θ_k.
+double repose_angle_deg(const Scene& s, int k);
 
 }  // namespace sandpic

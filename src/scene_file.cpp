@@ -248,14 +248,56 @@ void apply_setting(Scene& s, const std::string& assignment) {
 // Every length in pixels is multiplied by `factor`, so the grain count goes by
 // factor². Grains keep their size in pixels: a pixel (and so every mm value)
 // grows by 1/factor, as if the same device were made with coarser sand.
+namespace {
+
+void scale_fields(Scene& s, double factor) {
+  for (auto& f : scene_fields())
+    if (f.px) f.set(s, scaled(json::parse(f.get(s).dump()), factor, f.path));
+}
+
+bool scales(Scene s, double factor) {
+  try {
+    scale_fields(s, factor);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+std::string shown_scale(double f) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", f);
+  return buf;
+}
+
+// The scale nearest `factor` at which every scaled key of `s` stays in its
+// range, rounded outward to 3 significant digits; NaN if none up to 1.
+double nearest_working_scale(const Scene& s, double factor) {
+  if (factor >= 1 || !scales(s, 1)) return NAN;
+  double lo = factor, hi = 1;  // lo fails, hi works: a key's minimum is passed going down
+  for (int i = 0; i < 40; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (scales(s, mid) ? hi : lo) = mid;
+  }
+  const double step = std::pow(10.0, std::floor(std::log10(hi)) - 2);
+  double up = std::ceil(hi / step - 1e-9) * step;
+  while (!scales(s, up)) up += step;
+  return up;
+}
+
+}  // namespace
+
 void apply_scale(Scene& s, double factor) {
   if (!(factor > 0) || !std::isfinite(factor) || factor > 8)
-    throw InputError("--scale must be in (0, 8], got " + std::to_string(factor));
+    throw InputError("--scale must be in (0, 8], got " + shown_scale(factor));
+  const Scene unscaled = s;
   try {
-    for (auto& f : scene_fields())
-      if (f.px) f.set(s, scaled(json::parse(f.get(s).dump()), factor, f.path));
+    scale_fields(s, factor);
   } catch (const InputError& e) {
-    throw InputError("--scale " + std::to_string(factor) + " makes " + e.what());
+    // The key is one the user may never have set: say what works.
+    const double works = nearest_working_scale(unscaled, factor);
+    throw InputError("--scale " + shown_scale(factor) + " makes " + e.what() +
+                     (std::isnan(works) ? std::string() : "; the smallest --scale that works for this scene is " + shown_scale(works)));
   }
   for (size_t i = 0; i < s.regions.size(); ++i) {  // areas: their place and their own lengths in px
     Area& a = s.regions[i];

@@ -11,7 +11,6 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
-#include "lattice/lattice_simulator.h"
 #include "src/errors.h"
 #include "src/falling_order.h"
 #include "src/init/init.h"

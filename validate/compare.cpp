@@ -1,5 +1,6 @@
 #include "validate/compare.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -113,6 +114,24 @@ double mean_composition_error(const std::vector<double>& per_band) {
   double sum = 0;
   for (double e : per_band) sum += e;
   return per_band.empty() ? 0 : sum / double(per_band.size());
+}
+
+cv::Mat difference_picture(const cv::Mat& a, const cv::Mat& b) {
+  const cv::Mat luma = luminance601(a);
+  cv::Mat out(a.size(), CV_8UC3);
+  for (int y = 0; y < a.rows; ++y)
+    for (int x = 0; x < a.cols; ++x) {
+      const cv::Vec3b p = a.at<cv::Vec3b>(y, x), q = b.at<cv::Vec3b>(y, x);
+      int d = 0;
+      for (int ch = 0; ch < 3; ++ch) d = std::max(d, std::abs(int(p[ch]) - int(q[ch])));
+      if (d == 0) {
+        const auto grey = uint8_t(std::lround(0.35 * luma.at<double>(y, x)));
+        out.at<cv::Vec3b>(y, x) = {grey, grey, grey};
+      } else {  // even a difference of 1 is plain to see
+        out.at<cv::Vec3b>(y, x) = {30, 30, uint8_t(128 + d / 2)};
+      }
+    }
+  return out;
 }
 
 Comparison compare_pictures(const cv::Mat& a, const cv::Mat& b, const std::array<Rgb, kClasses>& colours, int bands,

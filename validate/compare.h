@@ -50,6 +50,11 @@ struct Comparison {
   double ssim_blurred = 0;            // SSIM of the luminance blurred by σ = blur_sigma_px
 };
 
+// Where two pictures differ (compare --diff): the first picture's luminance
+// dimmed to grey, and every pixel whose colour differs in red, brighter the
+// larger its largest channel difference. 8-bit BGR of one size.
+cv::Mat difference_picture(const cv::Mat& a, const cv::Mat& b);
+
 // Both pictures 8-bit BGR of one size (the caller checks).
 Comparison compare_pictures(const cv::Mat& a, const cv::Mat& b, const std::array<Rgb, kClasses>& colours, int bands,
                             double blur_sigma_px);

@@ -9,7 +9,6 @@
 #include <opencv2/imgproc.hpp>
 #include <tbb/parallel_for.h>
 
-#include "lattice/lattice_simulator.h"
 #include "src/errors.h"
 #include "src/output.h"
 #include "src/pipeline.h"

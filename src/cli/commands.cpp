@@ -343,7 +343,8 @@ struct BenchFrictionCommand {
 
 // Issue 4: how alike two pictures are, on luminance and on the pile.
 struct CompareCommand {
-  std::string a, b, scene_path;
+  std::string a, b, scene_path, diff_path;
+  std::vector<std::string> tolerances;
   bool as_json = false;
   int bands = 8;
   double blur = 3;
@@ -357,7 +358,41 @@ struct CompareCommand {
                                           "(none: the default scene's colours)");
     cmd->add_option("--bands", bands, "horizontal bands for the composition error")->check(CLI::Range(1, 100000));
     cmd->add_option("--blur", blur, "σ in px of the Gaussian blur before the blurred SSIM")->check(CLI::Range(0.0, 1000.0));
+    cmd->add_option("--diff", diff_path, "write where the pictures differ as a PNG (differing pixels red over the "
+                                         "first picture in grey)");
+    cmd->add_option("--tolerance", tolerances,
+                    "METRIC=BOUND, repeatable: exit 1 when an error (silhouette_error, composition_error) is above "
+                    "its bound or a similarity (ssim, ssim_blurred, psnr_db) below it");
     cmd->callback([this] { run(); });
+  }
+
+  struct Bound {
+    std::string metric;
+    double bound;
+    bool error;  // an error metric: lower is better
+  };
+
+  // Every --tolerance checked before any work, so a typo costs no run.
+  std::vector<Bound> bounds() const {
+    std::vector<Bound> out;
+    for (const std::string& t : tolerances) {
+      const size_t eq = t.find('=');
+      const std::string name = t.substr(0, eq);
+      const bool error = name == "silhouette_error" || name == "composition_error";
+      if (!error && name != "ssim" && name != "ssim_blurred" && name != "psnr_db")
+        throw InputError("--tolerance '" + t + "': the metric must be silhouette_error, composition_error, ssim, "
+                         "ssim_blurred or psnr_db");
+      double v = NAN;
+      try {
+        size_t used = 0;
+        v = eq == std::string::npos ? NAN : std::stod(t.substr(eq + 1), &used);
+        if (eq + 1 + used != t.size()) v = NAN;
+      } catch (const std::exception&) {
+      }
+      if (!std::isfinite(v)) throw InputError("--tolerance '" + t + "': expected METRIC=NUMBER");
+      out.push_back({name, v, error});
+    }
+    return out;
   }
 
   static cv::Mat load(const std::string& path) {
@@ -369,6 +404,8 @@ struct CompareCommand {
   }
 
   void run() {
+    const std::vector<Bound> limits = bounds();
+    if (!diff_path.empty()) check_writable(diff_path);
     const Scene s = scene_path.empty() ? Scene{} : load_scene(scene_path);
     const cv::Mat ia = load(a), ib = load(b);
     if (ia.size() != ib.size())
@@ -393,6 +430,27 @@ struct CompareCommand {
     j["composition_error_per_band"] = c.composition;
     j["blur_sigma_px"] = c.blur_sigma_px;
     j["ssim_blurred"] = c.ssim_blurred;
+    if (!diff_path.empty()) {
+      std::vector<uchar> png;
+      if (!cv::imencode(".png", difference_picture(ia, ib), png)) throw InputError("cannot encode " + diff_path);
+      write_atomic(diff_path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+    }
+    print(c, j);
+    // psnr_db is +inf for identical pictures: above every bound.
+    std::string over;
+    for (const Bound& l : limits) {
+      const double v = j[l.metric].is_null() ? INFINITY : j[l.metric].get<double>();
+      if (l.error ? v > l.bound : v < l.bound) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "%s%s %.6g %s %.6g", over.empty() ? "" : "; ", l.metric.c_str(), v,
+                      l.error ? "above its tolerance" : "below its tolerance", l.bound);
+        over += buf;
+      }
+    }
+    if (!over.empty()) throw CheckFailed("compare: " + over);
+  }
+
+  void print(const Comparison& c, const ordered_json& j) const {
     if (as_json) {
       std::cout << j.dump(2) << "\n";
       return;

@@ -47,4 +47,9 @@ struct Initialization {
 // its own scene inside its rectangle; cells in window px, tagged by area.
 Initialization initialize(const Scene& s);
 
+// paper §10, Fig. 18: the separators' grains take
+// segment.pattern.separator_class (when > 0), so the thin rectangles draw
+// lines between the patterned strips.
+void paint_separators(const Scene& s, GrainSet& g);
+
 }  // namespace sandpic

@@ -5,7 +5,6 @@
 #include "src/init/init.h"
 #include "src/regions.h"
 #include "src/scene_file.h"
-#include "src/segment/pattern.h"
 
 namespace sandpic {
 

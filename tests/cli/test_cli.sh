@@ -68,6 +68,18 @@ one_line; err_has "ramp.png"
 expect 2 "compare missing" -- "$BIN" compare "$T/a.png" "$T/none.png"
 one_line; err_has "none.png"
 if ! cmp -s "$T/a.png" "$T/c.png"; then ok; else bad "another seed gave the same picture"; fi
+# For scripts: an error picture, and tolerances that exit 1 when passed.
+expect 1 "compare beyond tolerance" -- "$BIN" compare "$T/a.png" "$T/c.png" --diff "$T/diff.png" \
+  --tolerance silhouette_error=0.0001 --tolerance ssim=0.1
+one_line; err_has "silhouette_error"; is_png "$T/diff.png"
+if grep -q "ssim" "$T/err"; then bad "ssim was within its bound: $(cat "$T/err")"; else ok; fi
+expect 0 "compare within tolerance" -- "$BIN" compare "$T/a.png" "$T/b.png" --tolerance silhouette_error=0 \
+  --tolerance psnr_db=60 --diff "$T/same.png"
+is_png "$T/same.png"
+expect 2 "compare bad tolerance" -- "$BIN" compare "$T/a.png" "$T/c.png" --tolerance ssim --diff "$T/nodiff.png"
+one_line; err_has "--tolerance 'ssim'"; absent "$T/nodiff.png"
+expect 2 "compare unknown metric" -- "$BIN" compare "$T/a.png" "$T/c.png" --tolerance psnr=30
+one_line; err_has "psnr=30"
 
 # Pictures in other colours than the scene's: never zeros, a clear error.
 expect 0 "fig16 render" -- "$BIN" render "$ROOT/examples/fig16.json" -o "$T/f16a.png" --scale 0.25

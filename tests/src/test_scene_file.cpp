@@ -108,6 +108,22 @@ TEST(SceneFile, CrossKeyChecks) {
   EXPECT_NE(error_of([&] { validate(s); }).find("segment.semi_major_min"), std::string::npos);
   s = Scene{};
   EXPECT_NE(error_of([&] { apply_scale(s, 0.05); }).find("--scale"), std::string::npos);
+}
+
+// A scale too small for a key the user never set says which scale works.
+TEST(SceneFile, TooSmallAScaleNamesTheSmallestThatWorks) {
+  const std::string e = error_of([] {
+    Scene s;
+    apply_scale(s, 0.05);
+  });
+  const std::string tag = "the smallest --scale that works for this scene is ";
+  ASSERT_NE(e.find(tag), std::string::npos) << e;
+  EXPECT_EQ(e.find('\n'), std::string::npos);
+  const double works = std::stod(e.substr(e.find(tag) + tag.size()));
+  Scene ok, below;
+  EXPECT_NO_THROW(apply_scale(ok, works));
+  EXPECT_THROW(apply_scale(below, works * 0.99), InputError);
+  EXPECT_GT(works, 0.05);
   EXPECT_EQ(error_of([&] { validate(Scene{}); }), "");
 }
 
