@@ -58,6 +58,7 @@ class DemRun {
   void record(int32_t id, Vec2 p);
   void make_static(int32_t id, Vec2 p);
   void make_fixed(int32_t id, Vec2 p);
+  void make_immovable(int32_t id, Vec2 p);
   template <class F>
   void for_each_body(F f) const;
   double surface(double x, double r) const;
@@ -252,14 +253,15 @@ void DemRun::move_stage() {
   }
 }
 
-// Gravity with buoyancy, and drag (physics/water_stage.h). Bullet then
-// solves the contacts.
+// Every body in the world: the dynamic grains and the static bodies.
 template <class F>
 void DemRun::for_each_body(F f) const {
   for (int32_t id : dynamic_) f(id, slot_[size_t(id)]);
   for (int32_t id : statics_) f(id, slot_[size_t(id)]);
 }
 
+// Gravity with buoyancy, and drag (physics/water_stage.h). Bullet then
+// solves the contacts.
 void DemRun::water_stage() {
   for_each_body([&](int32_t id, int slot) {
     const Vec2 v = world_.velocity(slot);
@@ -293,10 +295,15 @@ void DemRun::make_static(int32_t id, Vec2 p) {
   } else if (s_.dem.static_bodies) {
     statics_.push_back(id);
   } else {  // immovable: a static sphere, fixed later as it is
-    world_.remove_body(slot_[size_t(id)]);
-    slot_[size_t(id)] = world_.add_static(k, p);
-    still_statics_.push_back(id);
+    make_immovable(id, p);
   }
+}
+
+// A static body becomes an immovable static sphere at p (already recorded).
+void DemRun::make_immovable(int32_t id, Vec2 p) {
+  world_.remove_body(slot_[size_t(id)]);
+  slot_[size_t(id)] = world_.add_static(in_.grains.cls[size_t(id)], p);
+  still_statics_.push_back(id);
 }
 
 // Algorithm 2, lines 13-21: a fixed grain leaves the simulation. It stays
@@ -461,22 +468,21 @@ void DemRun::wake_stage() {
     return false;
   };
   std::vector<int32_t> bodies, spheres;
+  spheres.swap(still_statics_);  // make_immovable appends the sleepers to the emptied list
   for (int32_t id : statics_) {
     const Vec2 p = world_.position(slot_[size_t(id)]);
     if (reached(p)) {
       bodies.push_back(id);
-      continue;
+    } else {
+      record(id, p);
+      make_immovable(id, p);
+      ++static_sleeps_;
     }
-    record(id, p);
-    world_.remove_body(slot_[size_t(id)]);
-    slot_[size_t(id)] = world_.add_static(in_.grains.cls[size_t(id)], p);
-    spheres.push_back(id);
-    ++static_sleeps_;
   }
-  for (int32_t id : still_statics_) {
+  for (int32_t id : spheres) {
     const Vec2 p(x_[size_t(id)], H_ - y_[size_t(id)]);
     if (!reached(p)) {
-      spheres.push_back(id);
+      still_statics_.push_back(id);
       continue;
     }
     world_.remove_static(slot_[size_t(id)]);
@@ -485,7 +491,6 @@ void DemRun::wake_stage() {
     ++static_wakes_;
   }
   statics_.swap(bodies);
-  still_statics_.swap(spheres);
 }
 
 std::string at(double t, int64_t steps) {

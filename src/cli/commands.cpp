@@ -430,11 +430,7 @@ struct CompareCommand {
     j["composition_error_per_band"] = c.composition;
     j["blur_sigma_px"] = c.blur_sigma_px;
     j["ssim_blurred"] = c.ssim_blurred;
-    if (!diff_path.empty()) {
-      std::vector<uchar> png;
-      if (!cv::imencode(".png", difference_picture(ia, ib), png)) throw InputError("cannot encode " + diff_path);
-      write_atomic(diff_path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
-    }
+    if (!diff_path.empty()) write_png(diff_path, difference_picture(ia, ib));
     print(c, j);
     // psnr_db is +inf for identical pictures: above every bound.
     std::string over;
