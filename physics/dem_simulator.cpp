@@ -1,6 +1,7 @@
 // The DEM backend. Each step is a short fixed list of named stages:
 //   release → insert → move (water → step (Bullet), n sub-steps) → [--frames] frame
-//   → [every cycle] classify → freeze → guard (and the stiffness watch's sub-steps)
+//   → [every cycle] classify → freeze → wake → guard (and the stiffness watch's sub-steps)
+// each timed (stats: stages_s, with the body-steps the Bullet step solved).
 // paper §7: release toward each unit's outlet; §8.1: the three-layer model.
 #include "physics/dem_simulator.h"
 
@@ -20,6 +21,7 @@
 #include "src/errors.h"
 #include "src/frames.h"
 #include "src/release.h"
+#include "src/stage_times.h"
 
 namespace sandpic {
 
@@ -35,6 +37,9 @@ constexpr double kUnsettled = 0.002;
 // (the grain in the way needs about 40 to clear it); retrying every step
 // cost 8% of the run in the neighbourhood checks.
 constexpr int kRetrySteps = 8;
+
+// The stages a run's time is reported by (stats: stages_s).
+enum Stage : size_t { kRelease, kInsert, kWater, kBulletStep, kFrame, kClassify, kFreeze, kWake, kGuard, kRunOn, kStages };
 
 class DemRun {
  public:
@@ -95,9 +100,10 @@ class DemRun {
 
   // ids: dynamic lowest first as of the last cycle, then arrivals; static
   // bodies (dem.static_bodies, within reach of the flow) and immovable
-  // static spheres; fixed grains still kept as static spheres.
+  // static spheres; fixed grains (bcre: static grains) still kept as static
+  // spheres.
   std::vector<int32_t> dynamic_, statics_, still_statics_, fixed_spheres_;
-  double buried_px_ = 0;  // a fixed sphere this far under H_s leaves for the ground
+  double buried_px_ = 0;  // a sphere of fixed_spheres_ this far under H_s leaves for the ground
   Arrivals arrivals_;
   std::vector<float> landed_;   // tops of slow dynamic grains and static bodies, per column, this cycle
   int64_t released_ = 0, inserted_ = 0, settled_ = 0, fixed_ = 0, delayed_ = 0;
@@ -107,6 +113,12 @@ class DemRun {
   double run_on_end_ = -1, run_on_deepest_ = 0;  // dem.run_on_s: when it ends, the deepest overlap since the last sample
   ordered_json run_on_ = ordered_json::array();
   int64_t steps_ = 0, cycles_ = 0;
+  // Body-steps (a body in the world for one sub-step): all, those after the
+  // last grain became a body (the tail), and, sampled once a cycle, those
+  // with a contact.
+  int64_t body_steps_ = 0, tail_body_steps_ = 0, contact_body_steps_ = 0;
+  StageTimes<kStages> times_{
+      {"release", "insert", "water", "bullet_step", "frames", "classify", "freeze", "wake", "guard", "run_on"}};
   size_t peak_bodies_ = 0;
   ordered_json samples_ = ordered_json::array();
   cv::Mat layer_snapshot_;
@@ -146,7 +158,7 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
   rule_.band_px = s_.dem.static_thickness_mm * px_per_mm(s_);
   const double big_d = 2 * *std::max_element(radius_.begin(), radius_.end());
   rule_.baseline = std::max(1, int(std::lround(s_.dem.slope_baseline_diameters * big_d)));
-  buried_px_ = rule_.band_px + 2 * big_d;
+  buried_px_ = (layers_ == Layers::Three ? rule_.band_px : 0) + 2 * big_d;
   // Resting on the static layer: the bottom within a quarter of the smallest
   // diameter of H_s (overlap and the outline's rounding to columns).
   rule_.support_px = 0.25 * small_d_;
@@ -247,10 +259,13 @@ void DemRun::set_substeps(int n) {
 // Stage: the water and Bullet's contacts, as the stiffness watch's n
 // sub-steps of dt/n (one at the defaults).
 void DemRun::move_stage() {
+  const int64_t bodies = int64_t(dynamic_.size() + statics_.size());
   for (int i = 0; i < watch_.substeps(); ++i) {
-    water_stage();
-    world_.step(sub_dt_);
+    times_.time(kWater, [&] { water_stage(); });
+    times_.time(kBulletStep, [&] { world_.step(sub_dt_); });
   }
+  body_steps_ += bodies * watch_.substeps();
+  if (inserted_ == n_) tail_body_steps_ += bodies * watch_.substeps();
 }
 
 // Every body in the world: the dynamic grains and the static bodies.
@@ -280,7 +295,8 @@ void DemRun::record(int32_t id, Vec2 p) {
 // makes those far from it immovable until it comes near). Made immovable,
 // the default, the toe of a heap can no longer spread: on verify-dem's quick
 // heap three-layer stood 5° steeper than all-dynamic. In bcre the static
-// layer is the height field, as the BCRE model has it.
+// layer is immovable too: each grain an exact static sphere until buried,
+// then part of the height field (see make_fixed for why not at once).
 void DemRun::make_static(int32_t id, Vec2 p) {
   const int k = in_.grains.cls[size_t(id)];
   const double r = radius_[k];
@@ -290,8 +306,8 @@ void DemRun::make_static(int32_t id, Vec2 p) {
   layer_[size_t(id)] = Layer::Static;
   if (layers_ == Layers::Bcre) {
     world_.remove_body(slot_[size_t(id)]);
-    world_.raise_ground(p, r);
-    slot_[size_t(id)] = -1;
+    slot_[size_t(id)] = world_.add_static(k, p);
+    fixed_spheres_.push_back(id);
   } else if (s_.dem.static_bodies) {
     statics_.push_back(id);
   } else {  // immovable: a static sphere, fixed later as it is
@@ -396,9 +412,10 @@ void DemRun::classify_stage() {
 
 // Stage (every cycle): Algorithm 2, lines 13-21. A static grain under the
 // static band becomes fixed (make_fixed); a fixed sphere two large grains
-// deeper than that is out of every body's reach and joins the height field.
+// deeper than that (bcre: a static sphere two large grains under H_s) is
+// out of every body's reach and joins the height field.
 void DemRun::freeze_stage() {
-  if (layers_ != Layers::Three) return;
+  if (layers_ == Layers::AllDynamic) return;
   std::vector<int32_t> still;
   still.reserve(statics_.size());
   for (int32_t id : statics_) {
@@ -652,17 +669,18 @@ SimResult DemRun::run() {
   progress_.start("dem", n_);
   frame_stage();  // frame 0: every grain still in the region
   while (released_ < n_ || !arrivals_.empty() || !dynamic_.empty()) {
-    release_stage();
-    insert_stage();
+    times_.time(kRelease, [&] { release_stage(); });
+    times_.time(kInsert, [&] { insert_stage(); });
     move_stage();
     t_ += dt_;
     ++steps_;
-    frame_stage();
+    times_.time(kFrame, [&] { frame_stage(); });
     if (steps_ % cycle) continue;
-    classify_stage();
-    freeze_stage();
-    wake_stage();
-    guard_stage();
+    contact_body_steps_ += world_.bodies_in_contact() * cycle * watch_.substeps();
+    times_.time(kClassify, [&] { classify_stage(); });
+    times_.time(kFreeze, [&] { freeze_stage(); });
+    times_.time(kWake, [&] { wake_stage(); });
+    times_.time(kGuard, [&] { guard_stage(); });
     if (samples_.size() < 100000 && steps_ % (cycle * 10) == 0) sample_layers();
     if (in_.stages && layer_snapshot_.empty() && inserted_ >= n_ / 2) layer_snapshot_ = layer_map();  // half in
     // The end: every grain has arrived and the picture is done: every body
@@ -681,12 +699,12 @@ SimResult DemRun::run() {
         // outline sampled (verify-dem's creep case).
         if (run_on_end_ < 0) run_on_end_ = t_ + s_.dem.run_on_s;
         if (t_ >= run_on_end_) {
-          if (s_.dem.run_on_s > 0) run_on_stage();
+          if (s_.dem.run_on_s > 0) times_.time(kRunOn, [&] { run_on_stage(); });
           break;
         }
       }
     }
-    if (run_on_end_ >= 0) run_on_stage();
+    if (run_on_end_ >= 0) times_.time(kRunOn, [&] { run_on_stage(); });
     progress_.update(layers_ == Layers::AllDynamic ? inserted_ : settled_ + resting_);
     if (t_ > limit)
       throw SimulationError(std::to_string(n_ - settled_ - int64_t(dynamic_.size())) + " grains still falling and " +
@@ -729,6 +747,13 @@ SimResult DemRun::run() {
   out.stats["substep_changes"] = substep_stats();
   out.stats["terminal_speed_px_s"] = water_.terminal_px_s;
   out.stats["layer_counts"] = thin;
+  // Where the time went: each stage's wall seconds, and the body-steps
+  // (sub-steps times bodies in the world) the Bullet step solved.
+  out.stats["stages_s"] = times_.json();
+  out.stats["body_steps"] = {{"all", body_steps_},
+                             {"per_grain", n_ > 0 ? double(body_steps_) / double(n_) : 0.0},
+                             {"tail", tail_body_steps_},
+                             {"in_contact", contact_body_steps_}};
   if (s_.dem.run_on_s > 0) out.stats["run_on"] = run_on_;
   return out;
 }

@@ -242,6 +242,18 @@ std::vector<int> GrainWorld::wedged(double depth) const {
   return slots;
 }
 
+int64_t GrainWorld::bodies_in_contact() const {
+  std::vector<char> touched(impl_->bodies.size(), 0);
+  btDispatcher& d = impl_->dispatcher;
+  for (int i = 0; i < d.getNumManifolds(); ++i) {
+    const btPersistentManifold* pm = d.getManifoldByIndexInternal(i);
+    if (pm->getNumContacts() == 0) continue;
+    for (const btCollisionObject* o : {pm->getBody0(), pm->getBody1()})
+      if (!o->isStaticObject()) touched[size_t(o->getUserIndex())] = 1;
+  }
+  return std::count(touched.begin(), touched.end(), char(1));
+}
+
 double GrainWorld::deepest_overlap() const {
   double deepest = 0;
   btDispatcher& d = impl_->dispatcher;

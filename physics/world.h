@@ -6,6 +6,7 @@
 // (physics/ground.h) has kGroundPerPx vertices per pixel: at one a small
 // grain (0.56 px) often spans no vertex, and raising the nearest ones to its
 // top puffed BCRE piles.
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -59,6 +60,8 @@ class GrainWorld {
   // the ground, a wall): wedged between immovable things, as no body can
   // be between bodies.
   std::vector<int> wedged(double depth) const;
+  // Bodies with at least one contact point (each gives the solver rows).
+  int64_t bodies_in_contact() const;
 
  private:
   struct Impl;
