@@ -69,8 +69,10 @@ std::string friction_bench_table(const std::vector<FrictionBenchRow>& rows) {
   for (const FrictionBenchRow& r : rows) by[r.layers][r.friction].push_back(&r);
   std::string out = "layers        friction  mean_angle  min_angle  max_angle  mean_slope  err_vs_all-dyn  median_s\n";
   for (auto& [layers, m] : by) {
-    double last = -1;
-    bool grows = true;
+    // A picture of many mountains has no heap angle (NaN): then the scene
+    // slope is what friction must raise.
+    double last = -1, last_slope = -1;
+    bool grows = true, slope_grows = true, angles = true;
     for (auto& [mu, v] : m) {
       std::vector<double> a, e, t;
       double slope = 0;
@@ -82,14 +84,20 @@ std::string friction_bench_table(const std::vector<FrictionBenchRow>& rows) {
         if (std::isfinite(x)) sum += x, ++n;
       double mean = n ? sum / n : NAN;
       grows = grows && std::isfinite(mean) && mean > last;
-      last = mean;
+      slope_grows = slope_grows && slope > last_slope;
+      angles = angles && std::isfinite(mean);
+      last = mean, last_slope = slope;
       char buf[256];
       std::snprintf(buf, sizeof buf, "%-13s %8.2f %11.1f %10.1f %10.1f %11.1f %15.4f %9.1f\n", layers.c_str(), mu, mean,
                     *std::min_element(a.begin(), a.end()), *std::max_element(a.begin(), a.end()), slope, median(e),
                     median(t));
       out += buf;
     }
-    out += layers + ": the mean angle " + (grows ? "grows" : "does NOT grow") + " with friction\n";
+    if (angles)
+      out += layers + ": the mean angle " + (grows ? "grows" : "does NOT grow") + " with friction\n";
+    else
+      out += layers + ": no heap angle (not one heap); the mean scene slope " +
+             (slope_grows ? "grows" : "does NOT grow") + " with friction\n";
   }
   return out;
 }

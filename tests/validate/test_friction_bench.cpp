@@ -40,5 +40,26 @@ TEST(FrictionBench, EveryFrictionSeedAndModelWithAnglesAndErrors) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
 }
 
+// A picture of many mountains has no heap angle: the verdict is then the
+// scene slope's, not a "does not grow" from NaN angles.
+TEST(FrictionBench, WithoutAHeapTheVerdictIsTheSceneSlopes) {
+  auto rows = [](std::vector<double> slopes, double angle) {
+    std::vector<FrictionBenchRow> out;
+    for (size_t i = 0; i < slopes.size(); ++i) {
+      FrictionBenchRow r;
+      r.layers = "three";
+      r.friction = 0.1 + 0.4 * double(i);
+      r.angle_deg = angle;
+      r.slope_deg = slopes[i];
+      out.push_back(r);
+    }
+    return out;
+  };
+  const auto has = [](const std::string& table, const std::string& s) { return table.find(s) != std::string::npos; };
+  EXPECT_TRUE(has(friction_bench_table(rows({9.5, 12.1, 13.0}, NAN)), "the mean scene slope grows with friction"));
+  EXPECT_TRUE(has(friction_bench_table(rows({9.5, 12.1, 12.0}, NAN)), "the mean scene slope does NOT grow"));
+  EXPECT_TRUE(has(friction_bench_table(rows({9.5, 12.1, 12.0}, 30)), "the mean angle does NOT grow"));
+}
+
 }  // namespace
 }  // namespace sandpic
