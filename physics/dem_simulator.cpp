@@ -729,7 +729,7 @@ SimResult DemRun::run() {
   size_t every = std::max<size_t>(1, samples_.size() / 200);
   for (size_t i = 0; i < samples_.size(); i += every) thin.push_back(samples_[i]);
   if (!samples_.empty() && (samples_.size() - 1) % every) thin.push_back(samples_.back());
-  out.stats["layers"] = layers_ == Layers::Three ? "three" : layers_ == Layers::Bcre ? "bcre" : "all-dynamic";
+  out.stats["layers"] = layers_name(layers_);
   out.stats["time_step_s"] = dt_;
   out.stats["slope_limit_deg"] = rule_.slope_limit_rad * 180 / std::numbers::pi;
   out.stats["steps"] = steps_;

@@ -14,6 +14,8 @@ double px_per_mm(const Scene& s) { return 1.0 / s.units.mm_per_pixel; }
 
 double grain_diameter_px(const Scene& s, int k) { return s.grains.diameter_mm[k] * px_per_mm(s); }
 
+std::string layers_name(Layers l) { return l == Layers::Three ? "three" : l == Layers::Bcre ? "bcre" : "all-dynamic"; }
+
 double repose_angle_deg(const Scene& s, int k) {
   if (s.lattice.repose_deg) return (*s.lattice.repose_deg)[k];
   return std::atan(s.lattice.repose_gain[k] * s.physics.friction) * 180 / std::numbers::pi;

@@ -234,5 +234,7 @@ double grain_diameter_px(const Scene& s, int k);
 // at, and the calibration and validation start from: tan θ_k =
 // lattice.repose_gain_k · physics.friction, unless lattice.repose_deg sets θ_k.
 double repose_angle_deg(const Scene& s, int k);
+// dem.layers as scene files spell it: three, bcre, all-dynamic.
+std::string layers_name(Layers l);
 
 }  // namespace sandpic

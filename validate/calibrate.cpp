@@ -18,8 +18,8 @@
 #include "src/segment/segment.h"
 #include "validate/compare.h"
 #include "validate/kept_runs.h"
-#include "validate/layer_bench.h"
 #include "validate/silhouette.h"
+#include "validate/statistics.h"
 
 namespace sandpic {
 namespace {

@@ -6,8 +6,8 @@
 #include <map>
 
 #include "src/pipeline.h"
-#include "validate/layer_bench.h"
 #include "validate/silhouette.h"
+#include "validate/statistics.h"
 
 namespace sandpic {
 

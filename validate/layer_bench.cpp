@@ -10,6 +10,7 @@
 #include "src/errors.h"
 #include "src/pipeline.h"
 #include "validate/silhouette.h"
+#include "validate/statistics.h"
 
 namespace sandpic {
 namespace {
@@ -24,16 +25,6 @@ std::string fmt(const char* f, double v) {
 const std::vector<Layers> kOrder = {Layers::AllDynamic, Layers::Three, Layers::Bcre};
 
 }  // namespace
-
-double median(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
-std::string layers_name(Layers l) { return l == Layers::Three ? "three" : l == Layers::Bcre ? "bcre" : "all-dynamic"; }
 
 std::vector<LayerBenchRow> run_layer_bench(const Scene& base, const LayerBenchOptions& opt, Simulator& dem,
                                            const std::function<void(const LayerBenchRow&)>& log) {

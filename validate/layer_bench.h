@@ -46,9 +46,4 @@ std::string layer_bench_table(const std::vector<LayerBenchRow>& rows);
 // Time against grains, log-log, one line per model (8-bit BGR).
 cv::Mat layer_bench_plot(const std::vector<LayerBenchRow>& rows);
 
-std::string layers_name(Layers l);
-
-// The median of the finite values (NaN if none): the benchmarks' statistic.
-double median(std::vector<double> v);
-
 }  // namespace sandpic

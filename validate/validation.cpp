@@ -13,8 +13,8 @@
 #include "src/output.h"
 #include "src/pipeline.h"
 #include "validate/kept_runs.h"
-#include "validate/layer_bench.h"
 #include "validate/silhouette.h"
+#include "validate/statistics.h"
 
 namespace sandpic {
 namespace {

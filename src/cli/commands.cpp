@@ -29,6 +29,7 @@
 #include "validate/grain_compare.h"
 #include "validate/friction_bench.h"
 #include "validate/layer_bench.h"
+#include "validate/statistics.h"
 
 namespace sandpic {
 

@@ -15,8 +15,8 @@
 #include "src/pipeline.h"
 #include "validate/dem/cases.h"
 #include "validate/friction_bench.h"
-#include "validate/layer_bench.h"
 #include "validate/silhouette.h"
+#include "validate/statistics.h"
 
 namespace sandpic::verify {
 namespace {
@@ -93,14 +93,6 @@ std::vector<Run> run_all(std::vector<Scene> scenes, const VerifyOptions& opt, co
   return runs;
 }
 
-double mean(const std::vector<double>& v) { return v.empty() ? NAN : std::accumulate(v.begin(), v.end(), 0.0) / double(v.size()); }
-double spread(const std::vector<double>& v) {  // standard deviation over seeds
-  if (v.size() < 2) return 0;
-  const double m = mean(v);
-  double s = 0;
-  for (double x : v) s += (x - m) * (x - m);
-  return std::sqrt(s / double(v.size() - 1));
-}
 
 // The mean silhouette error between every pair of runs (the floor).
 double floor_error(const std::vector<const Run*>& runs) {
