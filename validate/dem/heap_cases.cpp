@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <numeric>
 
 #include <tbb/parallel_for.h>
 
@@ -92,7 +91,6 @@ std::vector<Run> run_all(std::vector<Scene> scenes, const VerifyOptions& opt, co
   });
   return runs;
 }
-
 
 // The mean silhouette error between every pair of runs (the floor).
 double floor_error(const std::vector<const Run*>& runs) {
