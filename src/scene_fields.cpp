@@ -44,18 +44,27 @@ long long as_integer(const json& v, const std::string& path, double lo, double h
   return static_cast<long long>(d);
 }
 
+Field kind_of(std::string kind, Field f) {
+  f.kind = std::move(kind);
+  return f;
+}
+
 template <class Acc>
 Field real(std::string path, Acc acc, double lo, double hi, std::string help, bool px = false) {
-  return {path, help, px, [acc](const Scene& s) { return ordered_json(acc(const_cast<Scene&>(s))); },
+  Field f{path, help, px, [acc](const Scene& s) { return ordered_json(acc(s)); },
           [acc, path, lo, hi](Scene& s, const json& v) { acc(s) = in_range(v, path, lo, hi); }};
+  f.kind = "number", f.lo = lo, f.hi = hi;
+  return f;
 }
 
 template <class Acc>
 Field integer(std::string path, Acc acc, double lo, double hi, std::string help, bool px = false) {
-  return {path, help, px, [acc](const Scene& s) { return ordered_json(acc(const_cast<Scene&>(s))); },
+  Field f{path, help, px, [acc](const Scene& s) { return ordered_json(acc(s)); },
           [acc, path, lo, hi](Scene& s, const json& v) {
             acc(s) = static_cast<std::remove_reference_t<decltype(acc(s))>>(as_integer(v, path, lo, hi));
           }};
+  f.kind = "integer", f.lo = lo, f.hi = hi;
+  return f;
 }
 
 constexpr double kMaxSeed = 9007199254740991.0;  // 2^53 - 1: exact in every JSON reader
@@ -66,25 +75,27 @@ uint64_t as_seed(const json& v, const std::string& path) {
 
 template <class Acc>
 Field optional_seed(std::string path, Acc acc, std::string help) {
-  return {path, help, false,
+  Field f{path, help, false,
           [acc](const Scene& s) {
-            auto& o = acc(const_cast<Scene&>(s));
+            const auto& o = acc(s);
             return o ? ordered_json(*o) : ordered_json(nullptr);
           },
           [acc, path](Scene& s, const json& v) {
             if (v.is_null()) acc(s).reset();
             else acc(s) = as_seed(v, path);
           }};
+  f.kind = "seed", f.lo = 0, f.hi = kMaxSeed;
+  return f;
 }
 
 template <class E, class Acc>
 Field choice(std::string path, Acc acc, std::vector<std::pair<std::string, E>> names, std::string help) {
   std::string list;
   for (auto& [n, e] : names) list += (list.empty() ? "" : " | ") + n;
-  return {path, help + " (" + list + ")", false,
+  Field f{path, help + " (" + list + ")", false,
           [acc, names](const Scene& s) {
             for (auto& [n, e] : names)
-              if (e == acc(const_cast<Scene&>(s))) return ordered_json(n);
+              if (e == acc(s)) return ordered_json(n);
             return ordered_json(nullptr);
           },
           [acc, names, path, list](Scene& s, const json& v) {
@@ -96,15 +107,20 @@ Field choice(std::string path, Acc acc, std::vector<std::pair<std::string, E>> n
                 }
             throw key_error(path, "must be one of " + list + ", got " + shown(v));
           }};
+  f.kind = "choice";
+  for (auto& [n, e] : names) f.choices.push_back(n);
+  return f;
 }
 
 template <class Acc>
 Field text(std::string path, Acc acc, std::string help) {
-  return {path, help, false, [acc](const Scene& s) { return ordered_json(acc(const_cast<Scene&>(s))); },
+  Field f{path, help, false, [acc](const Scene& s) { return ordered_json(acc(s)); },
           [acc, path](Scene& s, const json& v) {
             if (!v.is_string()) throw key_error(path, std::string("expected a string, got ") + v.type_name());
             acc(s) = v.get<std::string>();
           }};
+  f.kind = "text";
+  return f;
 }
 
 const json& element(const json& v, const std::string& path, size_t n) {
@@ -122,9 +138,10 @@ std::array<double, kClasses> reals4(const json& v, const std::string& path, doub
 
 template <class Acc>
 Field per_class(std::string path, Acc acc, double lo, double hi, std::string help, bool px = false) {
-  return {path, help + ", per class S1..S4", px,
-          [acc](const Scene& s) { return ordered_json(acc(const_cast<Scene&>(s))); },
+  Field f{path, help + ", per class S1..S4", px, [acc](const Scene& s) { return ordered_json(acc(s)); },
           [acc, path, lo, hi](Scene& s, const json& v) { acc(s) = reals4(v, path, lo, hi); }};
+  f.kind = "per_class", f.lo = lo, f.hi = hi;
+  return f;
 }
 
 std::string hex(Rgb c) {
@@ -152,8 +169,10 @@ Rgb as_rgb(const json& v, const std::string& path) {
 
 template <class Acc>
 Field colour(std::string path, Acc acc, std::string help) {
-  return {path, help, false, [acc](const Scene& s) { return ordered_json(hex(acc(const_cast<Scene&>(s)))); },
+  Field f{path, help, false, [acc](const Scene& s) { return ordered_json(hex(acc(s))); },
           [acc, path](Scene& s, const json& v) { acc(s) = as_rgb(v, path); }};
+  f.kind = "colour";
+  return f;
 }
 
 // Objects inside lists (ellipses, cell overrides) are read key by key, with
@@ -196,10 +215,10 @@ Polyline as_polyline(const json& v, const std::string& p) {
 // Lines of a sketch: [[[x, y], [x, y], ...], ...].
 template <class Acc>
 Field polylines(std::string path, Acc acc, std::string help) {
-  return {path, help, true,
+  Field f{path, help, true,
           [acc](const Scene& s) {
             ordered_json out = ordered_json::array();
-            for (const Polyline& line : acc(const_cast<Scene&>(s))) {
+            for (const Polyline& line : acc(s)) {
               ordered_json pts = ordered_json::array();
               for (const auto& p : line) pts.push_back({p[0], p[1]});
               out.push_back(pts);
@@ -212,15 +231,19 @@ Field polylines(std::string path, Acc acc, std::string help) {
             for (size_t i = 0; i < v.size(); ++i) lines.push_back(as_polyline(v[i], path + "[" + std::to_string(i) + "]"));
             acc(s) = std::move(lines);
           }};
+  f.kind = "list";
+  return f;
 }
 
 template <class Acc>
 Field boolean(std::string path, Acc acc, std::string help) {
-  return {path, help, false, [acc](const Scene& s) { return ordered_json(acc(const_cast<Scene&>(s))); },
+  Field f{path, help, false, [acc](const Scene& s) { return ordered_json(acc(s)); },
           [acc, path](Scene& s, const json& v) {
             if (!v.is_boolean()) throw key_error(path, std::string("expected true or false, got ") + shown(v));
             acc(s) = v.get<bool>();
           }};
+  f.kind = "boolean";
+  return f;
 }
 
 Field ellipses_field() {
@@ -233,7 +256,7 @@ Field ellipses_field() {
       {"angle_deg",
        [](EllipseSpec& e, const json& v, const std::string& p) { e.angle_deg = in_range(v, p, -360, 360); }},
   };
-  return {"segment.ellipses",
+  return kind_of("list", Field{"segment.ellipses",
           "explicit ellipses for segment.method=explicit: [{cx, cy, a, b, angle_deg}] in window px (y down)", true,
           [](const Scene& s) {
             ordered_json out = ordered_json::array();
@@ -243,7 +266,7 @@ Field ellipses_field() {
           },
           [keys](Scene& s, const json& v) {
             s.segment.ellipses = list_of<EllipseSpec>(v, "segment.ellipses", keys, {"cx", "cy", "a", "b"});
-          }};
+          }});
 }
 
 // paper §10, Fig. 16: figures over the sand.
@@ -260,7 +283,7 @@ Field figures_field() {
       {"y", [](Figure& f, const json& v, const std::string& p) { f.y = in_range(v, p, -1e6, 1e6); }},
       {"scale", [](Figure& f, const json& v, const std::string& p) { f.scale = in_range(v, p, 1e-3, 1e3); }},
   };
-  return {"render.figures",
+  return kind_of("list", Field{"render.figures",
           "figures over the sand (§10, Fig. 16): [{mask: image, x, y, scale} or {polygon: [[x, y], ...]}]; "
           "sand on a figure is drawn in C1 (0.7) and C2 (0.3)",
           true,
@@ -281,7 +304,7 @@ Field figures_field() {
             for (size_t i = 0; i < s.render.figures.size(); ++i)
               if (s.render.figures[i].mask.empty() == s.render.figures[i].polygon.empty())
                 throw key_error("render.figures[" + std::to_string(i) + "]", "needs a mask image or a polygon (one of them)");
-          }};
+          }});
 }
 
 Field overrides_field() {
@@ -293,7 +316,7 @@ Field overrides_field() {
       {"secondary",
        [](CellOverride& c, const json& v, const std::string& p) { c.secondary = int(as_integer(v, p, 1, 4)) - 1; }},
   };
-  return {"init.cell_overrides",
+  return kind_of("list", Field{"init.cell_overrides",
           "per-cell classes chosen by hand (paper §3): [{cell, dominant, secondary}], cells numbered row by row "
           "from the top-left, classes 1..4",
           false,
@@ -306,11 +329,11 @@ Field overrides_field() {
           [keys](Scene& s, const json& v) {
             s.init.cell_overrides =
                 list_of<CellOverride>(v, "init.cell_overrides", keys, {"cell", "dominant", "secondary"});
-          }};
+          }});
 }
 
 Field colours_field() {
-  return {"grains.colors", "C1..C4, one per class: \"#rrggbb\" or [r, g, b]", false,
+  return kind_of("colours", Field{"grains.colors", "C1..C4, one per class: \"#rrggbb\" or [r, g, b]", false,
           [](const Scene& s) {
             ordered_json out = ordered_json::array();
             for (auto c : s.grains.colors) out.push_back(hex(c));
@@ -320,11 +343,11 @@ Field colours_field() {
             element(v, "grains.colors", kClasses);
             for (int k = 0; k < kClasses; ++k)
               s.grains.colors[k] = as_rgb(v[k], "grains.colors[" + std::to_string(k) + "]");
-          }};
+          }});
 }
 
 Field repose_deg_field() {
-  return {"lattice.repose_deg",
+  Field f{"lattice.repose_deg",
           "angle of repose in degrees per class S1..S4, overriding repose_gain·friction; null: from friction", false,
           [](const Scene& s) {
             return s.lattice.repose_deg ? ordered_json(*s.lattice.repose_deg) : ordered_json(nullptr);
@@ -333,6 +356,16 @@ Field repose_deg_field() {
             if (v.is_null()) s.lattice.repose_deg.reset();
             else s.lattice.repose_deg = reals4(v, "lattice.repose_deg", 1, 75);
           }};
+  f.kind = "per_class", f.lo = 1, f.hi = 75;
+  return f;
+}
+
+Field seed_field() {
+  Field f{"seed", "sets the layout and the physics seed at once", false,
+          [](const Scene& s) { return ordered_json(s.seed); },
+          [](Scene& s, const json& v) { s.seed = as_seed(v, "seed"); }};
+  f.kind = "seed", f.lo = 0, f.hi = kMaxSeed;
+  return f;
 }
 
 // paper §9: a preset's keys, read when the key is (a scene file reads its
@@ -340,7 +373,7 @@ Field repose_deg_field() {
 Field preset_field() {
   std::string names;
   for (const Preset& p : presets()) names += (names.empty() ? "" : " | ") + p.name;
-  return {"preset", "a base from §9's rules, read first; the scene's own keys override it (" + names + ")", false,
+  Field f{"preset", "a base from §9's rules, read first; the scene's own keys override it (" + names + ")", false,
           [](const Scene& s) { return ordered_json(s.preset); },
           [names](Scene& s, const json& v) {
             if (!v.is_string()) throw key_error("preset", std::string("expected a string, got ") + v.type_name());
@@ -351,10 +384,10 @@ Field preset_field() {
             apply_json(s, json::parse(p->json));
             s.preset = name;
           }};
-}
-
-bool area_key(const std::string& path) {
-  return path.rfind("init.", 0) == 0 || path.rfind("segment.", 0) == 0 || path == "grains.proportions";
+  f.kind = "choice";
+  f.choices.push_back("");  // none
+  for (const Preset& p : presets()) f.choices.push_back(p.name);
+  return f;
 }
 
 // An area's own keys, flattened to (path, JSON text); every value checked
@@ -362,7 +395,8 @@ bool area_key(const std::string& path) {
 void flatten_area(const json& v, const std::string& path, const std::string& where,
                   std::vector<std::pair<std::string, std::string>>& out) {
   const auto& fields = scene_fields();
-  const bool leaf = std::any_of(fields.begin(), fields.end(), [&](const Field& f) { return f.path == path; });
+  const auto field = std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return f.path == path; });
+  const bool leaf = field != fields.end();
   const bool prefix = std::any_of(fields.begin(), fields.end(),
                                   [&](const Field& f) { return f.path.rfind(path + ".", 0) == 0; });
   if (!leaf && prefix && v.is_object()) {
@@ -370,7 +404,7 @@ void flatten_area(const json& v, const std::string& path, const std::string& whe
     return;
   }
   if (!leaf) throw InputError("scene key '" + where + "." + path + "': unknown key (did you mean '" + nearest_key(path) + "'?)");
-  if (!area_key(path))
+  if (!field->area)
     throw InputError("scene key '" + where + "." + path + "': an area sets only init.*, segment.* and grains.proportions");
   out.emplace_back(path, v.dump());
 }
@@ -428,7 +462,7 @@ ordered_json area_json(const Area& a) {
 
 // paper §10, Fig. 17: areas of the region with their own settings.
 Field regions_field() {
-  return {"regions",
+  return kind_of("list", Field{"regions",
           "areas of the region with their own tessellation, colour mix and segmentation (§10, Fig. 17): "
           "[{rect: [x0, y0, x1, y1] or polygon: [[x, y], ...], preset, init: {...}, segment: {...}, "
           "grains: {proportions}}]; a pixel belongs to the first area listed that holds it",
@@ -443,55 +477,68 @@ Field regions_field() {
             std::vector<Area> areas;
             for (size_t i = 0; i < v.size(); ++i) areas.push_back(as_area(v[i], "regions[" + std::to_string(i) + "]"));
             s.regions = std::move(areas);
-          }};
+          }});
 }
 
+// The table, in the order a person reads a scene file, section by section:
+// which stages read a section's keys, and whether an area may set them.
 std::vector<Field> make_fields() {
-  using S = Scene;
-  return {
-      text("description", [](S& s) -> auto& { return s.description; }, "free text about the scene, for people"),
+  std::vector<Field> all;
+  auto section = [&all](unsigned readers, bool area, std::vector<Field> keys) {
+    for (Field& f : keys) {
+      if (f.readers == kPipeline) f.readers = readers;  // not declared otherwise in the entry
+      f.area = f.area || area;
+      all.push_back(std::move(f));
+    }
+  };
+  section(kPipeline, false, {
+      text("description", [](auto& s) -> auto& { return s.description; }, "free text about the scene, for people"),
       preset_field(),
-      integer("window.width", [](S& s) -> int& { return s.window.width; }, 8, 20000, "window width, px (§4.1)", true),
-      integer("window.height", [](S& s) -> int& { return s.window.height; }, 8, 20000, "window height, px", true),
-      integer("region.height", [](S& s) -> int& { return s.region.height; }, 1, 20000,
+      integer("window.width", [](auto& s) -> auto& { return s.window.width; }, 8, 20000, "window width, px (§4.1)", true),
+      integer("window.height", [](auto& s) -> auto& { return s.window.height; }, 8, 20000, "window height, px", true),
+      integer("region.height", [](auto& s) -> auto& { return s.region.height; }, 1, 20000,
               "initialization region height at the top of the window, px (§4.1)", true),
-      real("units.mm_per_pixel", [](S& s) -> double& { return s.units.mm_per_pixel; }, 1e-4, 100,
+      real("units.mm_per_pixel", [](auto& s) -> auto& { return s.units.mm_per_pixel; }, 1e-4, 100,
            "mm per pixel; one grain per pixel of the region"),
-      real("units.packing", [](S& s) -> double& { return s.units.packing; }, 0.3, 0.91,
+      real("units.packing", [](auto& s) -> auto& { return s.units.packing; }, 0.3, 0.91,
            "2D packing fraction of a pile"),
-      per_class("grains.density_g_cm3", [](S& s) -> auto& { return s.grains.density_g_cm3; }, 0.01, 100,
+      per_class("grains.density_g_cm3", [](auto& s) -> auto& { return s.grains.density_g_cm3; }, 0.01, 100,
                 "density, g/cm³ (§4.1)"),
-      per_class("grains.diameter_mm", [](S& s) -> auto& { return s.grains.diameter_mm; }, 1e-4, 100,
+      per_class("grains.diameter_mm", [](auto& s) -> auto& { return s.grains.diameter_mm; }, 1e-4, 100,
                 "diameter, mm (§4.1)"),
-      per_class("grains.proportions", [](S& s) -> auto& { return s.grains.proportions; }, 0, 1,
-                "share of cells whose dominant class it is (§4.4, Algorithm 1)"),
+      per_class("grains.proportions", [](auto& s) -> auto& { return s.grains.proportions; }, 0, 1,
+                "share of cells whose dominant class it is (§4.4, Algorithm 1)")
+          .in_area(),
       colours_field(),
-      choice<InitMethod>("init.method", [](S& s) -> auto& { return s.init.method; },
+  });
+  // paper §4-5: what an area of the region (Fig. 17) may make its own.
+  section(kPipeline, true, {
+      choice<InitMethod>("init.method", [](auto& s) -> auto& { return s.init.method; },
                          {{"tessellation", InitMethod::Tessellation}, {"halftone", InitMethod::Halftone}},
                          "how the region is filled (§4)"),
-      text("init.image", [](S& s) -> auto& { return s.init.image; },
+      text("init.image", [](auto& s) -> auto& { return s.init.image; },
            "input picture for init.method=halftone, resized to the region if its size differs (§4.2)"),
-      choice<TessellationKind>("init.tessellation", [](S& s) -> auto& { return s.init.tessellation; },
+      choice<TessellationKind>("init.tessellation", [](auto& s) -> auto& { return s.init.tessellation; },
                                {{"uniform", TessellationKind::Uniform},
                                 {"varying", TessellationKind::Varying},
                                 {"strips", TessellationKind::Strips}},
                                "cell layout (§4.3: Fig. 4, Fig. 5; §9 strips)"),
-      real("init.cell_width", [](S& s) -> double& { return s.init.cell_width; }, 1, 1e5,
+      real("init.cell_width", [](auto& s) -> auto& { return s.init.cell_width; }, 1, 1e5,
            "uniform cell width, px", true),
-      real("init.cell_height", [](S& s) -> double& { return s.init.cell_height; }, 1, 1e5,
+      real("init.cell_height", [](auto& s) -> auto& { return s.init.cell_height; }, 1, 1e5,
            "uniform cell height, px", true),
-      real("init.row_height_min", [](S& s) -> double& { return s.init.row_height_min; }, 1, 1e5,
+      real("init.row_height_min", [](auto& s) -> auto& { return s.init.row_height_min; }, 1, 1e5,
            "varying: row height at the top; strips: smallest strip, px", true),
-      real("init.row_height_max", [](S& s) -> double& { return s.init.row_height_max; }, 1, 1e5,
+      real("init.row_height_max", [](auto& s) -> auto& { return s.init.row_height_max; }, 1, 1e5,
            "varying: row height at the bottom; strips: largest strip, px", true),
-      real("init.cell_width_min", [](S& s) -> double& { return s.init.cell_width_min; }, 1, 1e5,
+      real("init.cell_width_min", [](auto& s) -> auto& { return s.init.cell_width_min; }, 1, 1e5,
            "varying: narrowest cell, px", true),
-      real("init.cell_width_max", [](S& s) -> double& { return s.init.cell_width_max; }, 1, 1e5,
+      real("init.cell_width_max", [](auto& s) -> auto& { return s.init.cell_width_max; }, 1, 1e5,
            "varying: widest cell, px", true),
-      real("init.dominant_share", [](S& s) -> double& { return s.init.dominant_share; }, 0, 1,
+      real("init.dominant_share", [](auto& s) -> auto& { return s.init.dominant_share; }, 0, 1,
            "probability that a grain takes its cell's dominant class (§4.4: 0.8)"),
       overrides_field(),
-      choice<SegmentMethod>("segment.method", [](S& s) -> auto& { return s.segment.method; },
+      choice<SegmentMethod>("segment.method", [](auto& s) -> auto& { return s.segment.method; },
                             {{"ellipses", SegmentMethod::Ellipses},
                              {"explicit", SegmentMethod::Explicit},
                              {"cells", SegmentMethod::Cells},
@@ -499,160 +546,172 @@ std::vector<Field> make_fields() {
                              {"pattern", SegmentMethod::Pattern}},
                             "falling units: automatic ellipses (§5.1), listed ellipses, the cells (Fig. 4b, 5b), "
                             "ellipses under a sketch's crossings (§5.2), or a regular pattern's rows (§10, Fig. 18)"),
-      real("segment.semi_major_min", [](S& s) -> double& { return s.segment.semi_major_min; }, 1, 1e5,
+      real("segment.semi_major_min", [](auto& s) -> auto& { return s.segment.semi_major_min; }, 1, 1e5,
            "semi-major axis of the top row of ellipses, px", true),
-      real("segment.semi_major_max", [](S& s) -> double& { return s.segment.semi_major_max; }, 1, 1e5,
+      real("segment.semi_major_max", [](auto& s) -> auto& { return s.segment.semi_major_max; }, 1, 1e5,
            "semi-major axis of the bottom row of ellipses, px", true),
-      real("segment.eccentricity_min", [](S& s) -> double& { return s.segment.eccentricity_min; }, 0, 0.999,
+      real("segment.eccentricity_min", [](auto& s) -> auto& { return s.segment.eccentricity_min; }, 0, 0.999,
            "smallest ellipse eccentricity (§9: small = steep piles)"),
-      real("segment.eccentricity_max", [](S& s) -> double& { return s.segment.eccentricity_max; }, 0, 0.999,
+      real("segment.eccentricity_max", [](auto& s) -> auto& { return s.segment.eccentricity_max; }, 0, 0.999,
            "largest ellipse eccentricity"),
       ellipses_field(),
-      polylines("segment.sketch.ridges", [](S& s) -> auto& { return s.segment.sketch.ridges; },
+      polylines("segment.sketch.ridges", [](auto& s) -> auto& { return s.segment.sketch.ridges; },
                 "sketch (§5.2): ridge lines, each [[x, y], ...] in window px (y down)"),
-      polylines("segment.sketch.arcs", [](S& s) -> auto& { return s.segment.sketch.arcs; },
+      polylines("segment.sketch.arcs", [](auto& s) -> auto& { return s.segment.sketch.arcs; },
                 "sketch (§5.2): arc-like curves across the ridge lines, each [[x, y], ...] in window px"),
-      text("segment.sketch.image", [](S& s) -> auto& { return s.segment.sketch.image; },
+      text("segment.sketch.image", [](auto& s) -> auto& { return s.segment.sketch.image; },
            "sketch as a picture of the region instead: ridge and arc strokes in the two colours below"),
-      colour("segment.sketch.ridge_color", [](S& s) -> auto& { return s.segment.sketch.ridge_color; },
+      colour("segment.sketch.ridge_color", [](auto& s) -> auto& { return s.segment.sketch.ridge_color; },
              "stroke colour of the ridge lines in segment.sketch.image"),
-      colour("segment.sketch.arc_color", [](S& s) -> auto& { return s.segment.sketch.arc_color; },
+      colour("segment.sketch.arc_color", [](auto& s) -> auto& { return s.segment.sketch.arc_color; },
              "stroke colour of the arc-like curves in segment.sketch.image"),
-      real("segment.sketch.shrink_per_px", [](S& s) -> double& { return s.segment.sketch.shrink_per_px; }, 0, 10,
+      real("segment.sketch.shrink_per_px", [](auto& s) -> auto& { return s.segment.sketch.shrink_per_px; }, 0, 10,
            "§5.2's α: semi-major axis a_i = 0.5 A_m - α P_i(y), P_i(y) the crossing's height above the region's bottom"),
-      real("segment.sketch.semi_major_floor", [](S& s) -> double& { return s.segment.sketch.semi_major_floor; }, 1, 1e5,
+      real("segment.sketch.semi_major_floor", [](auto& s) -> auto& { return s.segment.sketch.semi_major_floor; }, 1, 1e5,
            "smallest semi-major axis of a sketch ellipse, px (high crossings)", true),
-      real("segment.sketch.bottom_band", [](S& s) -> double& { return s.segment.sketch.bottom_band; }, 0.01, 1,
+      real("segment.sketch.bottom_band", [](auto& s) -> auto& { return s.segment.sketch.bottom_band; }, 0.01, 1,
            "A_m = region width / ridge lines reaching this share of the region above its bottom"),
-      boolean("segment.sketch.narrow", [](S& s) -> auto& { return s.segment.sketch.narrow; },
+      boolean("segment.sketch.narrow", [](auto& s) -> auto& { return s.segment.sketch.narrow; },
               "§5.2, Fig. 7c: insert two long narrow ellipses on top of an ellipse whose next crossing up its ridge is far"),
-      real("segment.sketch.narrow_spacing", [](S& s) -> double& { return s.segment.sketch.narrow_spacing; }, 0, 100,
+      real("segment.sketch.narrow_spacing", [](auto& s) -> auto& { return s.segment.sketch.narrow_spacing; }, 0, 100,
            "§5.2: far means farther than this times the lower ellipse's semi-minor axis"),
-      real("segment.pattern.row_height_min", [](S& s) -> double& { return s.segment.pattern.row_height_min; }, 1, 1e5,
+      real("segment.pattern.row_height_min", [](auto& s) -> auto& { return s.segment.pattern.row_height_min; }, 1, 1e5,
            "pattern (Fig. 18): lowest row of ellipse units, px", true),
-      real("segment.pattern.row_height_max", [](S& s) -> double& { return s.segment.pattern.row_height_max; }, 1, 1e5,
+      real("segment.pattern.row_height_max", [](auto& s) -> auto& { return s.segment.pattern.row_height_max; }, 1, 1e5,
            "pattern: highest row, px", true),
-      real("segment.pattern.semi_major_min", [](S& s) -> double& { return s.segment.pattern.semi_major_min; }, 1, 1e5,
+      real("segment.pattern.semi_major_min", [](auto& s) -> auto& { return s.segment.pattern.semi_major_min; }, 1, 1e5,
            "pattern: smallest semi-major axis of a unit's two ellipses, px", true),
-      real("segment.pattern.semi_major_max", [](S& s) -> double& { return s.segment.pattern.semi_major_max; }, 1, 1e5,
+      real("segment.pattern.semi_major_max", [](auto& s) -> auto& { return s.segment.pattern.semi_major_max; }, 1, 1e5,
            "pattern: largest semi-major axis, px", true),
-      real("segment.pattern.minor_share_min", [](S& s) -> double& { return s.segment.pattern.minor_share_min; }, 0.05, 1,
+      real("segment.pattern.minor_share_min", [](auto& s) -> auto& { return s.segment.pattern.minor_share_min; }, 0.05, 1,
            "pattern: smallest semi-minor axis, as a share of half the row height"),
-      real("segment.pattern.minor_share_max", [](S& s) -> double& { return s.segment.pattern.minor_share_max; }, 0.05, 1,
+      real("segment.pattern.minor_share_max", [](auto& s) -> auto& { return s.segment.pattern.minor_share_max; }, 0.05, 1,
            "pattern: largest semi-minor axis, as a share of half the row height"),
-      real("segment.pattern.separator", [](S& s) -> double& { return s.segment.pattern.separator; }, 0, 1e4,
+      real("segment.pattern.separator", [](auto& s) -> auto& { return s.segment.pattern.separator; }, 0, 1e4,
            "pattern: height of the thin rectangles between rows, px (0: none)", true),
-      integer("segment.pattern.separator_class", [](S& s) -> int& { return s.segment.pattern.separator_class; }, 0, 4,
+      integer("segment.pattern.separator_class", [](auto& s) -> auto& { return s.segment.pattern.separator_class; }, 0, 4,
               "pattern: class S1..S4 of the separators' grains (0: as the tessellation filled them)"),
-      real("order.row_tolerance", [](S& s) -> double& { return s.order.row_tolerance; }, 0, 1e5,
+  });
+  section(kPipeline, false, {
+      real("order.row_tolerance", [](auto& s) -> auto& { return s.order.row_tolerance; }, 0, 1e5,
            "units whose centres differ by at most this in y form one row (§6), px", true),
-      real("release.outlet_width_mm", [](S& s) -> double& { return s.release.outlet_width_mm; }, 0, 1e4,
+      real("release.outlet_width_mm", [](auto& s) -> auto& { return s.release.outlet_width_mm; }, 0, 1e4,
            "outlet at the middle of a unit's lowest edge, mm (§7: 15 mm)"),
-      real("release.gravity_m_s2", [](S& s) -> double& { return s.release.gravity_m_s2; }, 0.01, 1000,
+      real("release.gravity_m_s2", [](auto& s) -> auto& { return s.release.gravity_m_s2; }, 0.01, 1000,
            "gravity in Eq. 1-2, m/s²"),
-      choice<Mode>("mode", [](S& s) -> auto& { return s.mode; },
+      choice<Mode>("mode", [](auto& s) -> auto& { return s.mode; },
                    {{"lattice", Mode::Lattice}, {"dem", Mode::Dem}}, "simulation backend"),
-      {"seed", "sets the layout and the physics seed at once", false,
-       [](const Scene& s) { return ordered_json(s.seed); },
-       [](Scene& s, const json& v) { s.seed = as_seed(v, "seed"); }},
-      optional_seed("layout_seed", [](S& s) -> auto& { return s.layout_seed; },
+      seed_field(),
+      optional_seed("layout_seed", [](auto& s) -> auto& { return s.layout_seed; },
                     "tessellation, colours, ellipses, falling-order ties; null: seed"),
-      optional_seed("physics_seed", [](S& s) -> auto& { return s.physics_seed; },
+      optional_seed("physics_seed", [](auto& s) -> auto& { return s.physics_seed; },
                     "the simulation's own randomness; null: seed"),
-      real("physics.friction", [](S& s) -> double& { return s.physics.friction; }, 0, 10,
+  });
+  section(kLattice | kDem, false, {  // the lattice's angle of repose follows the friction
+      real("physics.friction", [](auto& s) -> auto& { return s.physics.friction; }, 0, 10,
            "Coulomb friction, static = dynamic (§7: 0.4)"),
-      real("physics.restitution", [](S& s) -> double& { return s.physics.restitution; }, 0, 1,
-           "restitution (§7: 0.1)"),
-      real("lattice.resolution", [](S& s) -> double& { return s.lattice.resolution; }, 0.05, 8,
+      real("physics.restitution", [](auto& s) -> auto& { return s.physics.restitution; }, 0, 1,
+           "restitution (§7: 0.1)")
+          .read_by(kDem),
+  });
+  section(kLattice, false, {
+      real("lattice.resolution", [](auto& s) -> auto& { return s.lattice.resolution; }, 0.05, 8,
            "height-field columns per pixel"),
-      per_class("lattice.repose_gain", [](S& s) -> auto& { return s.lattice.repose_gain; }, 0.01, 20,
+      per_class("lattice.repose_gain", [](auto& s) -> auto& { return s.lattice.repose_gain; }, 0.01, 20,
                 "tan(angle of repose) = gain · physics.friction"),
       repose_deg_field(),
-      per_class("lattice.runout_px", [](S& s) -> auto& { return s.lattice.runout_px; }, 0, 1e4,
+      per_class("lattice.runout_px", [](auto& s) -> auto& { return s.lattice.runout_px; }, 0, 1e4,
                 "how far a grain keeps going down a slope once stable, px (grain-scale: --scale keeps it)"),
-      real("lattice.bulk", [](S& s) -> double& { return s.lattice.bulk; }, 0.25, 4,
+      real("lattice.bulk", [](auto& s) -> auto& { return s.lattice.bulk; }, 0.25, 4,
            "area a grain takes in the pile, as a multiple of its packed area (DEM piles pack looser)"),
-      real("lattice.surface_px", [](S& s) -> double& { return s.lattice.surface_px; }, 0, 100,
+      real("lattice.surface_px", [](auto& s) -> auto& { return s.lattice.surface_px; }, 0, 100,
            "the DEM's loose top layer: each column's top 10 px of sand drawn this much thicker, px (--scale keeps it)"),
-      real("lattice.trap_rate", [](S& s) -> double& { return s.lattice.trap_rate; }, 0, 1,
+      real("lattice.trap_rate", [](auto& s) -> auto& { return s.lattice.trap_rate; }, 0, 1,
            "chance per column slid that a rolling grain is caught on the flank (paper §8, BCRE [24]); 0: never"),
-      real("lattice.trap_deg", [](S& s) -> double& { return s.lattice.trap_deg; }, 0, 45,
+      real("lattice.trap_deg", [](auto& s) -> auto& { return s.lattice.trap_deg; }, 0, 45,
            "how much steeper than its angle of repose a flank may be where a rolling grain is caught, degrees"),
-      real("lattice.spot_busy_s", [](S& s) -> double& { return s.lattice.spot_busy_s; }, 0, 10,
+      real("lattice.spot_busy_s", [](auto& s) -> auto& { return s.lattice.spot_busy_s; }, 0, 10,
            "seconds a landing spot (a pixel column) stays busy after a grain lands on it; grains due there wait, "
            "as the DEM's insertion does (settling arrival only); 0: never"),
-      per_class("lattice.picture_share", [](S& s) -> auto& { return s.lattice.picture_share; }, 0.05, 20,
+      per_class("lattice.picture_share", [](auto& s) -> auto& { return s.lattice.picture_share; }, 0.05, 20,
                 "where classes mix in a column, each is drawn in proportion to area · share, as the DEM's "
                 "nearest-grain picture shows small grains among big ones larger than their area (1: by area)"),
-      text("lattice.calibration", [](S& s) -> auto& { return s.lattice.calibration; },
+      text("lattice.calibration", [](auto& s) -> auto& { return s.lattice.calibration; },
            "a file written by sandpic calibrate: its lattice values replace the scene's (lattice mode only)"),
-      choice<LatticeArrival>("lattice.arrival", [](S& s) -> auto& { return s.lattice.arrival; },
+      choice<LatticeArrival>("lattice.arrival", [](auto& s) -> auto& { return s.lattice.arrival; },
                       {{"settling", LatticeArrival::Settling}, {"release", LatticeArrival::Release}},
                       "grains land in the order they reach the pile (settling: dem.release_rate, Eq. 1, then the "
                       "class's settling speed in dem.water, as the DEM) or in falling order (release)"),
-      integer("lattice.window_columns", [](S& s) -> int& { return s.lattice.window_columns; }, 0, 64,
+      integer("lattice.window_columns", [](auto& s) -> auto& { return s.lattice.window_columns; }, 0, 64,
               "columns the non-local slope rule looks ahead; 0: chosen per class"),
-      choice<Layers>("dem.layers", [](S& s) -> auto& { return s.dem.layers; },
+  });
+  // The DEM's keys; the device's release rate and water are the lattice's too
+  // (lattice.arrival settling lands grains as they reach the pile).
+  section(kDem, false, {
+      choice<Layers>("dem.layers", [](auto& s) -> auto& { return s.dem.layers; },
                      {{"three", Layers::Three}, {"bcre", Layers::Bcre}, {"all-dynamic", Layers::AllDynamic}},
                      "DEM layer model (§8): three layers, two (BCRE: static grains become a height field), or none"),
-      real("dem.step_diameters", [](S& s) -> double& { return s.dem.step_diameters; }, 0.005, 1,
+      real("dem.step_diameters", [](auto& s) -> auto& { return s.dem.step_diameters; }, 0.005, 1,
            "the time step: the most a grain moves in one step, in small-grain diameters"),
-      integer("dem.solver_iterations", [](S& s) -> int& { return s.dem.solver_iterations; }, 1, 1000,
+      integer("dem.solver_iterations", [](auto& s) -> auto& { return s.dem.solver_iterations; }, 1, 1000,
               "Bullet constraint solver iterations per step"),
-      real("dem.release_rate", [](S& s) -> double& { return s.dem.release_rate; }, 1, 1e9,
-           "grains released per simulated second (§7)"),
-      real("dem.rolling_resistance", [](S& s) -> double& { return s.dem.rolling_resistance; }, 0, 10,
+      real("dem.release_rate", [](auto& s) -> auto& { return s.dem.release_rate; }, 1, 1e9,
+           "grains released per simulated second (§7)")
+          .read_by(kLattice | kDem),
+      real("dem.rolling_resistance", [](auto& s) -> auto& { return s.dem.rolling_resistance; }, 0, 10,
            "rolling resistance μ_r: a contact's torque is at most μ_r·R_r·N, R_r = R_a·R_b/(R_a+R_b) (0: round grains spread flat)"),
-      {"dem.water", "the device's water: drag and buoyancy per class density", false,
-       [](const Scene& s) { return ordered_json(s.dem.water); },
-       [](Scene& s, const json& v) {
-         if (!v.is_boolean()) throw key_error("dem.water", std::string("expected true or false, got ") + shown(v));
-         s.dem.water = v.get<bool>();
-       }},
-      real("dem.water_density_g_cm3", [](S& s) -> double& { return s.dem.water_density_g_cm3; }, 0, 50,
-           "water density, g/cm³"),
-      real("dem.water_viscosity_pa_s", [](S& s) -> double& { return s.dem.water_viscosity_pa_s; }, 1e-6, 100,
-           "water viscosity, Pa·s"),
-      integer("dem.cycle_steps", [](S& s) -> int& { return s.dem.cycle_steps; }, 1, 100000,
+      boolean("dem.water", [](auto& s) -> auto& { return s.dem.water; },
+              "the device's water: drag and buoyancy per class density")
+          .read_by(kLattice | kDem),
+      real("dem.water_density_g_cm3", [](auto& s) -> auto& { return s.dem.water_density_g_cm3; }, 0, 50,
+           "water density, g/cm³")
+          .read_by(kLattice | kDem),
+      real("dem.water_viscosity_pa_s", [](auto& s) -> auto& { return s.dem.water_viscosity_pa_s; }, 1e-6, 100,
+           "water viscosity, Pa·s")
+          .read_by(kLattice | kDem),
+      integer("dem.cycle_steps", [](auto& s) -> auto& { return s.dem.cycle_steps; }, 1, 100000,
               "steps per simulation cycle: the layers are updated once a cycle (§8.1: 40)"),
-      real("dem.rest_displacement", [](S& s) -> double& { return s.dem.rest_displacement; }, 0, 10,
+      real("dem.rest_displacement", [](auto& s) -> auto& { return s.dem.rest_displacement; }, 0, 10,
            "a grain is at rest when it moved less than this in a cycle, in its diameters"),
-      integer("dem.patience_cycles", [](S& s) -> int& { return s.dem.patience_cycles; }, 0, 100000,
+      integer("dem.patience_cycles", [](auto& s) -> auto& { return s.dem.patience_cycles; }, 0, 100000,
               "a grain at rest this many cycles in a row becomes static on any slope (0: never; faster, less exact)"),
-      real("dem.slope_limit_deg", [](S& s) -> double& { return s.dem.slope_limit_deg; }, 0, 90,
+      real("dem.slope_limit_deg", [](auto& s) -> auto& { return s.dem.slope_limit_deg; }, 0, 90,
            "§8.1's α: a grain becomes static only where its steepest drop to the static layer is below it "
            "(0: atan(min(friction, rolling resistance)) + dem.slope_margin_deg)"),
-      real("dem.slope_margin_deg", [](S& s) -> double& { return s.dem.slope_margin_deg; }, 0, 60,
+      real("dem.slope_margin_deg", [](auto& s) -> auto& { return s.dem.slope_margin_deg; }, 0, 60,
            "with dem.slope_limit_deg 0: α is the angle a lone grain slides or rolls at plus this"),
-      real("dem.slope_baseline_diameters", [](S& s) -> double& { return s.dem.slope_baseline_diameters; }, 0.5, 1000,
+      real("dem.slope_baseline_diameters", [](auto& s) -> auto& { return s.dem.slope_baseline_diameters; }, 0.5, 1000,
            "§8.1's θ is the steepest drop to the static layer this far to either side, in the largest grain's diameters"),
-      real("dem.static_thickness_mm", [](S& s) -> double& { return s.dem.static_thickness_mm; }, 0, 1000,
+      real("dem.static_thickness_mm", [](auto& s) -> auto& { return s.dem.static_thickness_mm; }, 0, 1000,
            "thickness of the static layer above the fixed one, mm (§8.1: 2)"),
-      boolean("dem.static_bodies", [](S& s) -> auto& { return s.dem.static_bodies; },
+      boolean("dem.static_bodies", [](auto& s) -> auto& { return s.dem.static_bodies; },
               "three: static grains stay bodies the flow can push, as §8.1 has them (false: immovable, faster, "
               "steeper piles)"),
-      real("dem.static_reach_diameters", [](S& s) -> double& { return s.dem.static_reach_diameters; }, 0, 1e6,
+      real("dem.static_reach_diameters", [](auto& s) -> auto& { return s.dem.static_reach_diameters; }, 0, 1e6,
            "with dem.static_bodies: a static grain is a body only while a dynamic grain is within this many "
            "largest-grain diameters, otherwise an immovable sphere: faster, steeper piles (0: no limit)"),
-      real("dem.insert_gap_diameters", [](S& s) -> double& { return s.dem.insert_gap_diameters; }, 0.5, 1e4,
+      real("dem.insert_gap_diameters", [](auto& s) -> auto& { return s.dem.insert_gap_diameters; }, 0.5, 1e4,
            "a falling grain becomes a body this far above the pile (diameters); above, its flight is analytic"),
-      real("dem.max_overlap", [](S& s) -> double& { return s.dem.max_overlap; }, 0.01, 10,
+      real("dem.max_overlap", [](auto& s) -> auto& { return s.dem.max_overlap; }, 0.01, 10,
            "divergence: two grains overlapping by more than this (small-grain diameters) stop the run"),
-      real("dem.target_overlap", [](S& s) -> double& { return s.dem.target_overlap; }, 0.001, 10,
+      real("dem.target_overlap", [](auto& s) -> auto& { return s.dem.target_overlap; }, 0.001, 10,
            "deepest overlap (small-grain diameters) a converged run keeps: past it, the sub-steps double"),
-      integer("dem.max_substeps", [](S& s) -> int& { return s.dem.max_substeps; }, 1, 256,
+      integer("dem.max_substeps", [](auto& s) -> auto& { return s.dem.max_substeps; }, 1, 256,
               "most sub-steps per step: a stiff run (deep overlaps, energy growing) doubles them up to this (1: never)"),
-      real("dem.run_on_s", [](S& s) -> double& { return s.dem.run_on_s; }, 0, 1000,
+      real("dem.run_on_s", [](auto& s) -> auto& { return s.dem.run_on_s; }, 0, 1000,
            "simulated seconds the run goes on after it has settled, its outline sampled into the stats (run_on)"),
-      text("render.background", [](S& s) -> auto& { return s.render.background; },
+  });
+  section(kRender, false, {
+      text("render.background", [](auto& s) -> auto& { return s.render.background; },
            "picture behind the emptied upper part (§10, Fig. 14g); empty: render.background_color"),
       figures_field(),
-      boolean("render.symmetric", [](S& s) -> auto& { return s.render.symmetric; },
+      boolean("render.symmetric", [](auto& s) -> auto& { return s.render.symmetric; },
               "§10, Fig. 18c: copy the settled sand, flip it vertically and place it over itself"),
-      colour("render.background_color", [](S& s) -> auto& { return s.render.background_color; },
+      colour("render.background_color", [](auto& s) -> auto& { return s.render.background_color; },
              "colour of the emptied upper part"),
-      regions_field(),
-  };
+  });
+  section(kPipeline, false, {regions_field()});
+  return all;
 }
 
 }  // namespace
@@ -660,6 +719,30 @@ std::vector<Field> make_fields() {
 const std::vector<Field>& scene_fields() {
   static const std::vector<Field> fields = make_fields();
   return fields;
+}
+
+bool area_key(const std::string& path) {
+  for (const Field& f : scene_fields())
+    if (f.path == path) return f.area;
+  return false;
+}
+
+ordered_json keys_json() {
+  const Scene defaults;
+  ordered_json out = ordered_json::array();
+  for (const Field& f : scene_fields()) {
+    ordered_json k{{"key", f.path}, {"help", f.help}, {"kind", f.kind}, {"default", f.get(defaults)}};
+    if (f.lo < f.hi) k["min"] = f.lo, k["max"] = f.hi;
+    if (!f.choices.empty()) k["choices"] = f.choices;
+    k["scaled"] = f.px;
+    ordered_json readers = ordered_json::array();
+    for (auto [bit, name] : {std::pair{kPipeline, "pipeline"}, {kLattice, "lattice"}, {kDem, "dem"}, {kRender, "render"}})
+      if (f.readers & bit) readers.push_back(name);
+    k["read_by"] = readers;
+    k["area"] = f.area;
+    out.push_back(k);
+  }
+  return out;
 }
 
 }  // namespace sandpic

@@ -21,6 +21,16 @@ const Field* find_field(const std::string& path) {
   return nullptr;
 }
 
+// Removes "a.b.c" from j, and the objects it leaves empty.
+void erase_path(ordered_json& j, const std::string& path) {
+  const size_t dot = path.find('.');
+  if (dot == std::string::npos) return void(j.erase(path));
+  const std::string head = path.substr(0, dot);
+  if (!j.contains(head)) return;
+  erase_path(j[head], path.substr(dot + 1));
+  if (j[head].empty()) j.erase(head);
+}
+
 bool is_prefix_of_a_field(const std::string& path) {
   for (auto& f : scene_fields())
     if (f.path.size() > path.size() && f.path.compare(0, path.size(), path) == 0 && f.path[path.size()] == '.')
@@ -323,16 +333,11 @@ ordered_json to_json(const Scene& s) {
 }
 
 std::string scene_digest(const Scene& s) {
+  // Every key the mode reads (the registry says which), not the description.
   ordered_json j = to_json(s);
   j.erase("description");
-  if (s.mode == Mode::Dem) {
-    j.erase("lattice");
-  } else {
-    ordered_json device = ordered_json::object();
-    for (const Field& f : scene_fields())
-      if (f.path.rfind("dem.", 0) == 0 && read_in_mode(f.path, Mode::Lattice)) device[f.path.substr(4)] = f.get(s);
-    j["dem"] = device;
-  }
+  for (const Field& f : scene_fields())
+    if (!read_in_mode(f, s.mode)) erase_path(j, f.path);
   const std::string text = j.dump();
   uint64_t h = 1469598103934665603ull;  // FNV-1a, 64 bit
   for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
@@ -341,18 +346,20 @@ std::string scene_digest(const Scene& s) {
   return buf;
 }
 
+bool read_in_mode(const Field& f, Mode m) {
+  return (f.readers & (kPipeline | kRender | (m == Mode::Dem ? kDem : kLattice))) != 0;
+}
+
 bool read_in_mode(const std::string& path, Mode m) {
-  if (path.rfind("lattice.", 0) == 0) return m == Mode::Lattice;
-  if (path.rfind("dem.", 0) != 0) return true;
-  static const char* device[] = {"dem.release_rate", "dem.water", "dem.water_density_g_cm3", "dem.water_viscosity_pa_s"};
-  return m == Mode::Dem || std::find(std::begin(device), std::end(device), path) != std::end(device);
+  const Field* f = find_field(path);
+  return f && read_in_mode(*f, m);
 }
 
 std::vector<std::string> unread_keys(const Scene& s, const std::vector<std::string>& set_keys) {
   std::vector<std::string> out;
   const Scene defaults;
   for (const Field& f : scene_fields()) {
-    if (read_in_mode(f.path, s.mode)) continue;
+    if (read_in_mode(f, s.mode)) continue;
     const bool given = std::find(set_keys.begin(), set_keys.end(), f.path) != set_keys.end();
     if (given || f.get(s) != f.get(defaults)) out.push_back(f.path);
   }

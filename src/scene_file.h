@@ -16,12 +16,31 @@ namespace sandpic {
 using json = nlohmann::json;
 using ordered_json = nlohmann::ordered_json;
 
+// Which stages read a key: the shared pipeline (paper §4-7, every mode), one
+// backend, or rendering (§10, every mode).
+enum Reader : unsigned { kPipeline = 1, kLattice = 2, kDem = 4, kRender = 8 };
+
+// One scene key, declared once (src/scene_fields.cpp); everything else about
+// keys derives from this: the scene file, --set, --scale, areas, the digest,
+// unread keys, `scene --keys`, docs/scene-reference.md and the studio's /api/keys.
 struct Field {
   std::string path;  // "segment.eccentricity_max"
   std::string help;
   bool px = false;  // a length in pixels: multiplied by --scale
   std::function<ordered_json(const Scene&)> get;
   std::function<void(Scene&, const json&)> set;  // throws InputError naming path
+  std::string kind;                     // number, integer, boolean, choice, text, seed, per_class, colour, list
+  double lo = 0, hi = 0;                // a number's range (lo == hi: none)
+  std::vector<std::string> choices;     // a choice's names
+  unsigned readers = kPipeline;         // which stages read it (Reader bits)
+  bool area = false;                    // an area of the region (regions[i]) may set it (paper §10, Fig. 17)
+
+  Field(std::string path, std::string help, bool px, std::function<ordered_json(const Scene&)> get,
+        std::function<void(Scene&, const json&)> set)
+      : path(std::move(path)), help(std::move(help)), px(px), get(std::move(get)), set(std::move(set)) {}
+
+  Field& read_by(unsigned r) { return readers = r, *this; }
+  Field& in_area() { return area = true, *this; }
 };
 
 const std::vector<Field>& scene_fields();
@@ -45,6 +64,12 @@ std::string scene_digest(const Scene& s);
 // the DEM's only the DEM but for the device's release rate and water (the
 // lattice lands grains by their settling, lattice.arrival); the others both.
 bool read_in_mode(const std::string& path, Mode m);
+bool read_in_mode(const Field& f, Mode m);
+// Whether an area (regions[i]) may set the key.
+bool area_key(const std::string& path);
+// Every key as the studio builds its controls from it (/api/keys): key, help,
+// kind, default, min, max, choices, scaled, read_by, area.
+ordered_json keys_json();
 // The keys s's mode never reads among `set_keys` (given with --set) and those
 // s holds at other than their default (as pbrt reports unused parameters).
 std::vector<std::string> unread_keys(const Scene& s, const std::vector<std::string>& set_keys);

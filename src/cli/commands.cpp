@@ -156,7 +156,8 @@ namespace {
 
 // docs/scene-reference.md's table of every key, made from the registry (a
 // test checks the page against it): its default, whether --scale multiplies
-// it, its help.
+// it, which stages read it (all: the shared pipeline), whether an area may
+// set it, its help.
 std::string reference_table() {
   auto cell = [](std::string v) {
     std::string out;
@@ -164,11 +165,15 @@ std::string reference_table() {
     return out;
   };
   std::ostringstream o;
-  o << "| key | default | scaled | meaning |\n| --- | --- | --- | --- |\n";
+  o << "| key | default | scaled | read by | area | meaning |\n| --- | --- | --- | --- | --- | --- |\n";
   const Scene defaults;
-  for (const Field& f : scene_fields())
+  for (const Field& f : scene_fields()) {
+    std::string readers;
+    for (auto [bit, name] : {std::pair{kPipeline, "all"}, {kLattice, "lattice"}, {kDem, "dem"}, {kRender, "render"}})
+      if (f.readers & bit) readers += (readers.empty() ? "" : ", ") + std::string(name);
     o << "| `" << f.path << "` | `" << cell(f.get(defaults).dump()) << "` | " << (f.px ? "yes" : "") << " | "
-      << cell(f.help) << " |\n";
+      << readers << " | " << (f.area ? "yes" : "") << " | " << cell(f.help) << " |\n";
+  }
   return o.str();
 }
 

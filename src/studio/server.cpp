@@ -96,6 +96,8 @@ struct Server::Impl {
       page(res, req.matches[1].str());
     });
     http.Get("/api/scene", [this](const httplib::Request&, httplib::Response& res) { send(res, scene_reply(start)); });
+    // Every scene key with its kind, range, choices and help: the page builds its controls from it.
+    http.Get("/api/keys", [](const httplib::Request&, httplib::Response& res) { send(res, json_reply(keys_json())); });
     http.Post("/api/preview", [this](const httplib::Request& req, httplib::Response& res) {
       send(res, previews.run([&] { return guarded([&] { return preview(req.body, opt.root, scale_param(req.get_param_value("scale"))); }); }));
     });

@@ -72,6 +72,13 @@ async function main() {
     assert.deepEqual(pngSize(first), { width: scene0.window.width, height: scene0.window.height }, 'preview size = the scene window');
     assert.match(await page.textContent('#stats'), /grains, .* units/);
     assert.equal(await page.inputValue('[data-key="physics.friction"]'), String(scene0.physics.friction));
+    // The controls' choices and ranges come from the key registry (/api/keys).
+    const keys = await page.evaluate(async () => (await fetch('/api/keys')).json());
+    const key = (k) => keys.find((x) => x.key === k);
+    for (const k of ['preset', 'init.method', 'init.tessellation', 'segment.method'])
+      assert.deepEqual(await page.$$eval(`[data-key="${k}"] option`, (os) => os.map((o) => o.value)), key(k).choices, `${k}'s options`);
+    assert.equal(await page.getAttribute('[data-key="physics.friction"]', 'max'), String(key('physics.friction').max));
+    assert.equal(await page.inputValue('[data-key="segment.method"]'), scene0.segment.method);
     log(`first preview: ${first.length} bytes, ${scene0.window.width}x${scene0.window.height}, ${hash(first)}`);
     await shot('loaded');
 

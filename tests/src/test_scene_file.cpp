@@ -227,6 +227,7 @@ TEST(SceneFile, LatticeDigestReadsTheDevicesReleaseAndWaterOnly) {
   Scene b = a;
   b.dem.solver_iterations = 11;  // the DEM's own: not read
   b.dem.layers = Layers::Bcre;
+  b.physics.restitution = 0.5;  // the lattice does not bounce
   EXPECT_EQ(scene_digest(a), scene_digest(b));
   for (auto change : std::vector<std::function<void(Scene&)>>{
            [](Scene& s) { s.dem.release_rate = 8000; }, [](Scene& s) { s.dem.water = false; },
@@ -287,6 +288,59 @@ TEST(SceneFile, UnreadKeysAreTheOtherModesSection) {
   EXPECT_TRUE(unread_keys(s, {}).empty());
   apply_setting(s, "mode=\"dem\"");
   EXPECT_EQ(unread_keys(s, {}), std::vector<std::string>{"lattice.bulk"});
+}
+
+// The registry declares each key's kind, range, choices, readers and whether
+// an area may set it; every default lies in its own range and choices.
+TEST(SceneRegistry, EveryKeyDeclaresWhatItIsAndWhoReadsIt) {
+  const Scene defaults;
+  for (const Field& f : scene_fields()) {
+    SCOPED_TRACE(f.path);
+    EXPECT_FALSE(f.kind.empty());
+    EXPECT_NE(f.readers, 0u);
+    const ordered_json d = f.get(defaults);
+    if (f.kind == "number" || f.kind == "integer") {
+      ASSERT_LT(f.lo, f.hi);
+      EXPECT_GE(d.get<double>(), f.lo);
+      EXPECT_LE(d.get<double>(), f.hi);
+    }
+    if (f.kind == "choice") EXPECT_NE(std::find(f.choices.begin(), f.choices.end(), d.get<std::string>()), f.choices.end());
+    Scene s;
+    EXPECT_NO_THROW(f.set(s, d));  // a default is a value the key accepts
+    const bool backend = f.path.starts_with("lattice.") || f.path.starts_with("dem.");
+    if (!backend) EXPECT_TRUE(read_in_mode(f, Mode::Lattice) || read_in_mode(f, Mode::Dem));
+  }
+  // An area of the region makes its own initialization and segmentation
+  // (paper §10, Fig. 17), nothing else.
+  for (const Field& f : scene_fields())
+    EXPECT_EQ(area_key(f.path),
+              f.path.starts_with("init.") || f.path.starts_with("segment.") || f.path == "grains.proportions")
+        << f.path;
+  EXPECT_FALSE(read_in_mode("physics.restitution", Mode::Lattice));
+  EXPECT_TRUE(read_in_mode("render.symmetric", Mode::Dem));
+  EXPECT_FALSE(read_in_mode("no.such.key", Mode::Dem));
+}
+
+TEST(SceneRegistry, KeysAsJsonForTheStudio) {
+  const ordered_json keys = keys_json();
+  ASSERT_EQ(keys.size(), scene_fields().size());
+  auto find = [&](const std::string& k) {
+    for (const auto& e : keys)
+      if (e["key"] == k) return e;
+    return ordered_json();
+  };
+  const ordered_json friction = find("physics.friction");
+  EXPECT_EQ(friction["kind"], "number");
+  EXPECT_EQ(friction["min"], 0.0);
+  EXPECT_EQ(friction["max"], 10.0);
+  EXPECT_EQ(friction["default"], Scene{}.physics.friction);
+  EXPECT_EQ(friction["read_by"], (ordered_json{"lattice", "dem"}));
+  EXPECT_EQ(find("segment.method")["choices"],
+            (ordered_json{"ellipses", "explicit", "cells", "sketch", "pattern"}));
+  EXPECT_EQ(find("segment.method")["area"], true);
+  EXPECT_EQ(find("preset")["choices"][0], "");
+  EXPECT_EQ(find("window.width")["scaled"], true);
+  EXPECT_FALSE(find("grains.colors").contains("min"));
 }
 
 }  // namespace

@@ -13,11 +13,29 @@ const App = {
 
   async start() {
     this.scene = await (await api('GET', '/api/scene')).json();
+    this.controls(await (await api('GET', '/api/keys')).json());
     this.bind();
     Sketch.init(document.getElementById('sketch'), (kind, line) => this.addStroke(kind, line), (i) => this.paintCell(i));
     this.dropTarget();
     this.show();
     this.changed(0);
+  },
+
+  // Each control's choices, range and help from the key registry (/api/keys),
+  // so a key's names and limits are declared once, in the tool.
+  controls(keys) {
+    const byKey = new Map(keys.map((k) => [k.key, k]));
+    for (const el of document.querySelectorAll('[data-key]')) {
+      const k = byKey.get(el.dataset.key);
+      if (!k) continue;
+      el.title = k.help;
+      if (el.tagName === 'SELECT' && k.choices) {
+        el.replaceChildren(...k.choices.map((c) => new Option(c === '' ? '(none)' : c, c)));
+      } else if (el.type === 'number' && k.min !== undefined) {
+        el.min = k.min;
+        el.max = k.max;
+      }
+    }
   },
 
   bind() {

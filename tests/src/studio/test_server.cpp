@@ -7,6 +7,7 @@
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 
+#include "src/scene_file.h"
 #include "tests/src/studio/studio_test_util.h"
 
 namespace sandpic::studio {
@@ -48,6 +49,10 @@ TEST(StudioServer, ServesThePageAndPreviews) {
   EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
   EXPECT_EQ(png->body.substr(1, 3), "PNG");
   EXPECT_TRUE(png->has_header("X-Sandpic-Stats"));
+  auto keys = c.Get("/api/keys");
+  ASSERT_TRUE(keys);
+  EXPECT_EQ(keys->status, 200);
+  EXPECT_EQ(nlohmann::json::parse(keys->body).size(), scene_fields().size());
 }
 
 TEST(StudioServer, ErrorsNameTheKeyAndUnknownPathsAre404) {
