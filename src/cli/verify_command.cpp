@@ -17,6 +17,7 @@ namespace {
 struct VerifyCommand {
   bool quick = false;
   std::string out, only;
+  std::vector<std::string> sets;
   int threads = 0;
 
   void add_to(CLI::App& app) {
@@ -26,6 +27,9 @@ struct VerifyCommand {
     cmd->add_option("--out", out, "folder for report.json and report.html")->required();
     cmd->add_option("--only", only, "case ids, comma-separated (settling, restitution, incline, rolling, notch, heap, "
                                     "creep, layers, step)");
+    cmd->add_option("--set", sets, "KEY=VALUE on every pile case's scene (heap, creep, layers, step), as render's "
+                                   "--set; repeatable; not the keys the cases vary (layers, friction, rolling "
+                                   "resistance, seeds)");
     cmd->add_option("--threads", threads, "worker threads (0: all cores); the results do not depend on it")
         ->check(CLI::Range(0, 1024));
     cmd->callback([this] { run(); });
@@ -38,6 +42,8 @@ struct VerifyCommand {
     opt.threads = threads;
     if (!only.empty()) opt.only = list_option<std::string>("--only", only, [](const std::string& i) { return i; });
     check_case_ids(opt.only);  // before anything is written
+    opt.sets = sets;
+    check_pile_settings(opt.sets);
     check_folder(out);
     const bool tty = Progress::stderr_is_terminal();
     opt.log = [tty](const std::string& line) {

@@ -213,6 +213,12 @@ if [ "$BULLET" = with-bullet ]; then
   if grep -q '"pass": true' "$T/vd/report.json" && grep -q "<svg" "$T/vd/report.html"; then ok; else bad "verify-dem report: $(head -c 400 "$T/vd/report.json")"; fi
   expect 2 "verify-dem bad case" -- "$BIN" verify-dem --out "$T/vd2" --only nonsense
   one_line; err_has "nonsense"; absent "$T/vd2"
+  # --set: a scene key on every pile run, never one the cases vary, checked before anything runs.
+  expect 2 "verify-dem --set of a varied key" -- "$BIN" verify-dem --out "$T/vd3" --only heap --set physics.friction=0.2
+  err_has "vary 'physics.friction'"
+  expect 2 "verify-dem --set of no key" -- "$BIN" verify-dem --out "$T/vd3" --only heap --set dem.nope=1
+  err_has "dem.nope"
+  absent "$T/vd3"
   # paper Fig. 12: the layer models side by side, as a table, CSV and plot.
   expect 0 "bench-layers" -- "$BIN" bench-layers "${TINY[@]}" --grains 100,200 --seeds 1,2 --all-dynamic-max 100 \
     --csv "$T/fig12.csv" --plot "$T/fig12.png"

@@ -83,6 +83,8 @@ struct Run {
 std::vector<Run> run_all(std::vector<Scene> scenes, const VerifyOptions& opt, const std::string& what) {
   std::vector<Run> runs(scenes.size());
   std::atomic<int> done{0};
+  for (Scene& s : scenes)
+    for (const std::string& a : opt.sets) apply_setting(s, a);
   tbb::parallel_for(size_t(0), scenes.size(), [&](size_t i) {
     auto sim = make_dem_simulator();
     RunResult r = run_pipeline(scenes[i], *sim, RunOptions{});

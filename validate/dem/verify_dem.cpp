@@ -1,5 +1,6 @@
 #include "validate/dem/verify_dem.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -82,13 +83,26 @@ void check_case_ids(const std::vector<std::string>& only) {
       }() + ")");
 }
 
+void check_pile_settings(const std::vector<std::string>& sets) {
+  static const char* varied[] = {"mode", "seed", "physics_seed", "dem.layers", "physics.friction", "dem.rolling_resistance"};
+  for (const std::string& a : sets) {
+    const std::string key = a.substr(0, a.find('='));
+    if (std::find(std::begin(varied), std::end(varied), key) != std::end(varied))
+      throw InputError("verify-dem --set " + a + ": the pile cases vary '" + key + "' themselves");
+    Scene s;
+    apply_setting(s, a);  // an unknown key or a bad value: its own error
+  }
+}
+
 VerifyReport run_verify_dem(const VerifyOptions& opt) {
   check_case_ids(opt.only);
   std::unique_ptr<tbb::global_control> threads;
   if (opt.threads > 0)
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, size_t(opt.threads));
+  check_pile_settings(opt.sets);
   VerifyReport report;
   report.quick = opt.quick;
+  report.sets = opt.sets;
   const auto start = std::chrono::steady_clock::now();
   for (const auto& [id, fn] : cases()) {
     if (!opt.only.empty() && std::find(opt.only.begin(), opt.only.end(), id) == opt.only.end()) continue;
@@ -126,7 +140,7 @@ ordered_json verify_json(const VerifyReport& r) {
                   {"checks", checks},
                   {"notes", c.notes}});
   }
-  return {{"quick", r.quick}, {"pass", r.pass()}, {"seconds", r.seconds}, {"cases", cs}};
+  return {{"quick", r.quick}, {"set", r.sets}, {"pass", r.pass()}, {"seconds", r.seconds}, {"cases", cs}};
 }
 
 }  // namespace sandpic

@@ -21,6 +21,9 @@ struct VerifyOptions {
   bool quick = false;
   int threads = 0;                 // 0: every core (TBB's default)
   std::vector<std::string> only;   // case ids; empty: all
+  // "key=value" set on every pile case's scene (heap, creep, layers, step),
+  // after the keys the cases vary (check_pile_settings refuses those).
+  std::vector<std::string> sets;
   std::function<void(const std::string&)> log = [](const std::string&) {};
 };
 
@@ -59,10 +62,16 @@ struct VerifyCase {
 
 struct VerifyReport {
   bool quick = false;
+  std::vector<std::string> sets;  // VerifyOptions::sets
   std::vector<VerifyCase> cases;
   double seconds = 0;
   bool pass() const;
 };
+
+// Throws InputError (exit 2) for a setting that is not a scene key's, or one
+// the pile cases vary themselves (dem.layers, physics.friction,
+// dem.rolling_resistance, the seeds, the mode).
+void check_pile_settings(const std::vector<std::string>& sets);
 
 // The case ids, in the order they run: settling, restitution, incline,
 // rolling, notch, heap, creep, layers, step.

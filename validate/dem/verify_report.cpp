@@ -84,7 +84,9 @@ std::string verify_html(const VerifyReport& r) {
       "border:1px solid #999}</style></head><body>\n";
   int failed = 0;
   for (const VerifyCase& c : r.cases) failed += !c.pass();
-  h += "<h1>sandpic verify-dem" + std::string(r.quick ? " --quick" : "") + "</h1>\n<p class=\"" +
+  std::string sets;
+  for (const std::string& a : r.sets) sets += " --set " + a;
+  h += "<h1>sandpic verify-dem" + std::string(r.quick ? " --quick" : "") + html_escape(sets) + "</h1>\n<p class=\"" +
        (r.pass() ? "pass\">every case passes" : "fail\">" + std::to_string(failed) + " of " + std::to_string(r.cases.size()) +
                                                      " cases fail") +
        " &middot; " + html_number("%.0f", r.seconds) + " s</p>\n<table><tr><th>case</th><th>checks</th><th>result</th><th>s</th></tr>\n";
