@@ -627,12 +627,15 @@ std::vector<Field> make_fields() {
       real("lattice.surface_px", [](auto& s) -> auto& { return s.lattice.surface_px; }, 0, 100,
            "the DEM's loose top layer: each column's top 10 px of sand drawn this much thicker, px (--scale keeps it)"),
       real("lattice.trap_rate", [](auto& s) -> auto& { return s.lattice.trap_rate; }, 0, 1,
-           "chance per column slid that a rolling grain is caught on the flank (paper §8, BCRE [24]); 0: never"),
+           "chance per column slid that a rolling grain is caught on the flank (paper §8, BCRE [24]); 0: never")
+          .fitted({0, 0.2, 1}),
       real("lattice.trap_deg", [](auto& s) -> auto& { return s.lattice.trap_deg; }, 0, 45,
-           "how much steeper than its angle of repose a flank may be where a rolling grain is caught, degrees"),
+           "how much steeper than its angle of repose a flank may be where a rolling grain is caught, degrees")
+          .fitted({3, 5}),
       real("lattice.spot_busy_s", [](auto& s) -> auto& { return s.lattice.spot_busy_s; }, 0, 10,
            "seconds a landing spot (a pixel column) stays busy after a grain lands on it; grains due there wait, "
-           "as the DEM's insertion does (settling arrival only); 0: never"),
+           "as the DEM's insertion does (settling arrival only); 0: never")
+          .fitted({0, 0.006, 0.008, 0.010, 0.012, 0.014}),
       per_class("lattice.picture_share", [](auto& s) -> auto& { return s.lattice.picture_share; }, 0.05, 20,
                 "where classes mix in a column, each is drawn in proportion to area · share, as the DEM's "
                 "nearest-grain picture shows small grains among big ones larger than their area (1: by area)"),
@@ -740,6 +743,7 @@ ordered_json keys_json() {
       if (f.readers & bit) readers.push_back(name);
     k["read_by"] = readers;
     k["area"] = f.area;
+    if (!f.fit_grid.empty()) k["fit_grid"] = f.fit_grid;
     out.push_back(k);
   }
   return out;

@@ -15,12 +15,6 @@
 namespace sandpic {
 namespace {
 
-const Field* find_field(const std::string& path) {
-  for (auto& f : scene_fields())
-    if (f.path == path) return &f;
-  return nullptr;
-}
-
 // Removes "a.b.c" from j, and the objects it leaves empty.
 void erase_path(ordered_json& j, const std::string& path) {
   const size_t dot = path.find('.');
@@ -159,6 +153,12 @@ json scaled(const json& v, double f, const std::string& path) {
 }
 
 }  // namespace
+
+const Field* find_field(const std::string& path) {
+  for (auto& f : scene_fields())
+    if (f.path == path) return &f;
+  return nullptr;
+}
 
 std::string nearest_key(const std::string& path) {
   std::string best;

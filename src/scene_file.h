@@ -34,6 +34,10 @@ struct Field {
   std::vector<std::string> choices;     // a choice's names
   unsigned readers = kPipeline;         // which stages read it (Reader bits)
   bool area = false;                    // an area of the region (regions[i]) may set it (paper §10, Fig. 17)
+  // A lattice setting fitted to the DEM by trying values: `calibrate --fit
+  // KEY` runs the whole fit once per value (the scene's own first) and keeps
+  // the best. Empty: not fitted this way.
+  std::vector<double> fit_grid;
 
   Field(std::string path, std::string help, bool px, std::function<ordered_json(const Scene&)> get,
         std::function<void(Scene&, const json&)> set)
@@ -41,6 +45,7 @@ struct Field {
 
   Field& read_by(unsigned r) { return readers = r, *this; }
   Field& in_area() { return area = true, *this; }
+  Field& fitted(std::vector<double> grid) { return fit_grid = std::move(grid), *this; }
 };
 
 const std::vector<Field>& scene_fields();
@@ -77,6 +82,7 @@ std::vector<std::string> unread_keys(const Scene& s, const std::vector<std::stri
 // it names no file). Read by the lattice mode only: a DEM run never opens it.
 Scene with_calibration(const Scene& s);
 std::string nearest_key(const std::string& path);
+const Field* find_field(const std::string& path);  // nullptr: no such key
 // paper §10, Fig. 17: the scene area i of s.regions is made with: s's keys,
 // then the area's preset (its init, segment and grains.proportions keys) and
 // its own keys, no areas of its own, and a layout seed of its own.

@@ -51,11 +51,18 @@ std::vector<std::vector<int>> physics_groups(const Scene& s) {
   return groups;
 }
 
+// The registry's keys with a fit grid (Field::fit_grid), in its order.
+std::vector<const Field*> grid_fields() {
+  std::vector<const Field*> out;
+  for (const Field& f : scene_fields())
+    if (!f.fit_grid.empty()) out.push_back(&f);
+  return out;
+}
+
 struct Params {
   std::vector<double> angle, runout;  // per group
   double bulk = 1, surface = 0;
-  double trap_rate = 0, trap_deg = 3;
-  double spot_busy_s = 0;
+  std::vector<double> grid;   // a value per grid_fields() key
   std::vector<double> share;  // lattice.picture_share per group
 };
 
@@ -100,9 +107,7 @@ class Fit {
     s.lattice.repose_deg = deg;
     s.lattice.bulk = p.bulk;
     s.lattice.surface_px = p.surface;
-    s.lattice.trap_rate = p.trap_rate;
-    s.lattice.trap_deg = p.trap_deg;
-    s.lattice.spot_busy_s = p.spot_busy_s;
+    for (size_t i = 0; i < grid_.size(); ++i) grid_[i]->set(s, p.grid[i]);
     for (size_t g = 0; g < groups_.size() && g < p.share.size(); ++g)
       for (int k : groups_[g]) s.lattice.picture_share[size_t(k)] = p.share[g];
   }
@@ -120,6 +125,7 @@ class Fit {
 
   std::vector<Target>& targets_;
   std::vector<std::vector<int>> groups_;
+  std::vector<const Field*> grid_ = grid_fields();
   Simulator& lattice_;
   int residual_count_ = 0;
   int64_t runs_ = 0;
@@ -287,6 +293,7 @@ std::vector<Scene> calibration_scenes(const Scene& base, const CalibrateOptions&
 Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const SimulatorFactory& make,
                       const std::function<void(const std::string&)>& log) {
   if (opt.physics_seeds.size() < 2) throw InputError("calibrate needs at least two physics seeds (--seeds)");
+  check_fit_keys(opt.fit);
   std::vector<Target> targets;
   for (Scene& s : calibration_scenes(base, opt)) {
     Target t;
@@ -360,9 +367,8 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   }
   p.bulk = base.lattice.bulk;
   p.surface = base.lattice.surface_px;
-  p.trap_rate = base.lattice.trap_rate;
-  p.trap_deg = base.lattice.trap_deg;
-  p.spot_busy_s = base.lattice.spot_busy_s;
+  const std::vector<const Field*> grid = grid_fields();
+  for (const Field* f : grid) p.grid.push_back(f->get(base).get<double>());
   c.error_before = fit.error(p);
   c.composition_before = fit.composition(p, opt.bands);
   // Two pile sizes at least (their heights a quarter apart) tell the
@@ -383,34 +389,42 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
     }
     return q;
   };
-  // Trapping moves the angle the flanks end at, and a busy spot changes which
-  // grains land first, so the angles are refitted for every candidate: the
-  // scene's own values, none, and a small grid of each asked for.
-  // A candidate equal to the scene's own is fitted once.
-  auto add_new = [](auto& list, auto v) {
-    if (std::find(list.begin(), list.end(), v) == list.end()) list.push_back(v);
-  };
-  std::vector<std::pair<double, double>> traps = {{p.trap_rate, p.trap_deg}};
-  if (opt.trap)
-    for (auto t : {std::pair{0.0, 3.0}, {0.2, 3.0}, {0.2, 5.0}, {1.0, 3.0}, {1.0, 5.0}}) add_new(traps, t);
-  std::vector<double> spots = {p.spot_busy_s};
-  if (opt.spot)
-    for (double v : {0.0, 0.006, 0.008, 0.010, 0.012, 0.014}) add_new(spots, v);
-  if (traps.size() * spots.size() == 1) {
+  // A grid key changes what the rest fits to (trapping moves the angle the
+  // flanks end at, a busy spot which grains land first), so the whole fit
+  // runs for every combination of the grids asked for: the scene's own values
+  // first, then each grid value (one equal to the scene's own is not repeated).
+  std::vector<std::vector<double>> candidates = {p.grid};
+  for (size_t i = 0; i < grid.size(); ++i) {
+    if (std::find(opt.fit.begin(), opt.fit.end(), grid[i]->path) == opt.fit.end()) continue;
+    std::vector<double> values = {p.grid[i]};
+    for (double v : grid[i]->fit_grid)
+      if (std::find(values.begin(), values.end(), v) == values.end()) values.push_back(v);
+    std::vector<std::vector<double>> more;
+    for (const auto& c : candidates)
+      for (double v : values) {
+        auto q = c;
+        q[i] = v;
+        more.push_back(q);
+      }
+    candidates = std::move(more);
+  }
+  if (candidates.size() == 1) {
     p = fit_all(p);
   } else {
     Params best;
     double best_e = INFINITY;
-    for (double spot : spots)
-      for (auto [rate, deg] : traps) {
-        Params q = p;
-        q.trap_rate = rate, q.trap_deg = deg, q.spot_busy_s = spot;
-        log("spot_busy_s " + std::to_string(spot) + ", trap_rate " + std::to_string(rate) + ", trap_deg " +
-            std::to_string(deg) + ":");
-        q = fit_all(q);
-        const double e = fit.error(q);
-        if (e < best_e) best_e = e, best = q;
-      }
+    for (const auto& values : candidates) {
+      Params q = p;
+      q.grid = values;
+      std::string what;
+      for (size_t i = 0; i < grid.size(); ++i)
+        if (std::find(opt.fit.begin(), opt.fit.end(), grid[i]->path) != opt.fit.end())
+          what += (what.empty() ? "" : ", ") + grid[i]->path + " " + json(values[i]).dump();
+      log(what + ":");
+      q = fit_all(q);
+      const double e = fit.error(q);
+      if (e < best_e) best_e = e, best = q;
+    }
     p = best;
   }
   c.error_after = fit.error(p);
@@ -424,12 +438,21 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   c.runout_px = applied.lattice.runout_px;
   c.bulk = p.bulk;
   c.surface_px = p.surface;
-  c.trap_rate = p.trap_rate;
-  c.trap_deg = p.trap_deg;
-  c.spot_busy_s = p.spot_busy_s;
+  for (size_t i = 0; i < grid.size(); ++i) c.grid[grid[i]->path] = p.grid[i];
   c.picture_share = applied.lattice.picture_share;
   c.lattice_runs = fit.runs();
   return c;
+}
+
+void check_fit_keys(const std::vector<std::string>& keys) {
+  std::string fittable;
+  for (const Field* f : grid_fields()) fittable += (fittable.empty() ? "" : ", ") + f->path;
+  for (const std::string& k : keys) {
+    const Field* f = find_field(k);
+    if (!f || f->fit_grid.empty())
+      throw InputError("calibrate --fit: " + std::string(f ? "scene key '" + k + "' has no fit grid" : "no scene key '" + k + "'") +
+                       " (keys fitted by trying values: " + fittable + ")");
+  }
 }
 
 ordered_json calibration_json(const Scene& base, const Calibration& c) {
@@ -439,9 +462,7 @@ ordered_json calibration_json(const Scene& base, const Calibration& c) {
   j["lattice"]["runout_px"] = c.runout_px;
   j["lattice"]["bulk"] = c.bulk;
   j["lattice"]["surface_px"] = c.surface_px;
-  j["lattice"]["trap_rate"] = c.trap_rate;
-  j["lattice"]["trap_deg"] = c.trap_deg;
-  j["lattice"]["spot_busy_s"] = c.spot_busy_s;
+  for (const auto& [key, value] : c.grid.items()) j["lattice"][key.substr(key.find('.') + 1)] = value;
   j["lattice"]["picture_share"] = c.picture_share;
   ordered_json& f = j["fit"];
   f["physics"] = {{"friction", base.physics.friction},

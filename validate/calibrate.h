@@ -24,19 +24,22 @@ struct CalibrateOptions {
   int scenes = 3;                         // variants of the scene (layout seed and tessellation)
   std::vector<uint64_t> physics_seeds = {1, 2};  // DEM runs per variant
   std::string runs_dir;                   // DEM piles kept here and reused while their digest holds ("": none)
-  // Also fit lattice.trap_rate and trap_deg (rolling grains caught on the
-  // flanks): the whole fit once per candidate on a small grid, the best kept.
-  bool trap = false;
-  // Also fit lattice.spot_busy_s (how long a landing spot stays busy, so a
-  // busy outlet's grains queue as in the DEM): the whole fit once per
-  // candidate, the best kept.
-  bool spot = false;
+  // Also fit these keys by their registry grids (Field::fit_grid: for
+  // example lattice.trap_rate and trap_deg, rolling grains caught on the
+  // flanks; lattice.spot_busy_s, a busy outlet's grains queueing as in the
+  // DEM): the whole fit once per combination of their values, the scene's
+  // own first, the best kept. check_fit_keys says which keys may be named.
+  std::vector<std::string> fit;
   // Also fit lattice.picture_share to the composition error over this many
   // horizontal bands (validate's --bands), after everything else: it moves no
   // grain and no column top. The composition error is reported either way.
   bool shares = false;
   int bands = 8;
 };
+
+// Throws InputError (exit 2) naming a key of `keys` that has no fit grid,
+// with the keys that have one.
+void check_fit_keys(const std::vector<std::string>& keys);
 
 // The scenes the fit runs on: the scene's physics (friction, restitution,
 // water, grains) with layout seeds seed+1000+i and, for a tessellated scene,
@@ -46,8 +49,9 @@ std::vector<Scene> calibration_scenes(const Scene& base, const CalibrateOptions&
 struct Calibration {
   std::array<double, kClasses> repose_deg{}, runout_px{};
   double bulk = 1, surface_px = 0;
-  double trap_rate = 0, trap_deg = 3;
-  double spot_busy_s = 0;
+  // Every key with a fit grid (fitted or the scene's own), in registry order:
+  // {"lattice.trap_rate": 0.2, ...}.
+  ordered_json grid = ordered_json::object();
   std::array<double, kClasses> picture_share{1, 1, 1, 1};
   std::vector<std::vector<int>> groups;  // classes the DEM cannot tell apart share their values
   double error_before = 0, error_after = 0;  // mean silhouette error, lattice vs each DEM run

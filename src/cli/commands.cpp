@@ -157,7 +157,7 @@ namespace {
 // docs/scene-reference.md's table of every key, made from the registry (a
 // test checks the page against it): its default, whether --scale multiplies
 // it, which stages read it (all: the shared pipeline), whether an area may
-// set it, its help.
+// set it, the values calibrate --fit tries, its help.
 std::string reference_table() {
   auto cell = [](std::string v) {
     std::string out;
@@ -165,14 +165,15 @@ std::string reference_table() {
     return out;
   };
   std::ostringstream o;
-  o << "| key | default | scaled | read by | area | meaning |\n| --- | --- | --- | --- | --- | --- |\n";
+  o << "| key | default | scaled | read by | area | fit grid | meaning |\n| --- | --- | --- | --- | --- | --- | --- |\n";
   const Scene defaults;
   for (const Field& f : scene_fields()) {
     std::string readers;
     for (auto [bit, name] : {std::pair{kPipeline, "all"}, {kLattice, "lattice"}, {kDem, "dem"}, {kRender, "render"}})
       if (f.readers & bit) readers += (readers.empty() ? "" : ", ") + std::string(name);
     o << "| `" << f.path << "` | `" << cell(f.get(defaults).dump()) << "` | " << (f.px ? "yes" : "") << " | "
-      << readers << " | " << (f.area ? "yes" : "") << " | " << cell(f.help) << " |\n";
+      << readers << " | " << (f.area ? "yes" : "") << " | "
+      << (f.fit_grid.empty() ? "" : cell(ordered_json(f.fit_grid).dump())) << " | " << cell(f.help) << " |\n";
   }
   return o.str();
 }

@@ -130,7 +130,7 @@ struct ValidateCommand {
 
 struct CalibrateCommand {
   SceneOptions scene;
-  std::string out, seeds = "1,2", grains = "8000", runs;
+  std::string out, seeds = "1,2", grains = "8000", runs, fit;
   int scenes = 3;
   bool trap = false;
   bool spot = false;
@@ -150,12 +150,12 @@ struct CalibrateCommand {
         ->capture_default_str()->check(CLI::Range(1, 100));
     cmd->add_option("--seeds", seeds, "DEM physics seeds per calibration scene, comma-separated (two or more)")
         ->capture_default_str();
-    cmd->add_flag("--trap", trap,
-                  "also fit lattice.trap_rate and trap_deg (rolling grains caught on the flanks): the fit runs once "
-                  "per candidate of a small grid");
+    cmd->add_option("--fit", fit,
+                    "also fit these keys, comma-separated, by trying the values of their grids (scene --reference: "
+                    "\"fit grid\"): the whole fit runs once per combination, the best kept");
+    cmd->add_flag("--trap", trap, "--fit lattice.trap_rate,lattice.trap_deg (rolling grains caught on the flanks)");
     cmd->add_flag("--spot", spot,
-                  "also fit lattice.spot_busy_s (a busy outlet's grains queue and land mixed, as in the DEM): the fit "
-                  "runs once per candidate of a small grid");
+                  "--fit lattice.spot_busy_s (a busy outlet's grains queue and land mixed, as in the DEM)");
     cmd->add_flag("--shares", shares,
                   "also fit lattice.picture_share (small grains drawn larger where they mix with big ones, as the DEM's "
                   "nearest-grain picture shows them) to the composition error; moves no grain");
@@ -169,8 +169,10 @@ struct CalibrateCommand {
     CalibrateOptions opt;
     opt.bands = bands;
     opt.shares = shares;
-    opt.trap = trap;
-    opt.spot = spot;
+    if (!fit.empty()) opt.fit = list_option<std::string>("--fit", fit, [](const std::string& k) { return k; });
+    if (trap) opt.fit.insert(opt.fit.end(), {"lattice.trap_rate", "lattice.trap_deg"});
+    if (spot) opt.fit.push_back("lattice.spot_busy_s");
+    check_fit_keys(opt.fit);
     opt.grains = list_option<int64_t>("--grains", grains, [](const std::string& i) {
       return int64_t(positive("--grains", i, 10000000));
     });
@@ -187,9 +189,12 @@ struct CalibrateCommand {
     write_atomic(out, calibration_json(s, c).dump(2) + "\n");
     std::printf("sandpic calibrate: %zu scenes x %zu DEM seeds, %lld lattice runs\n", c.scenes.size(),
                 opt.physics_seeds.size(), (long long)c.lattice_runs);
-    std::printf("repose_deg %.2f %.2f %.2f %.2f  runout_px %g %g %g %g  bulk %.4f  surface_px %.2f  trap_rate %g  trap_deg %g  spot_busy_s %g\n",
+    std::printf("repose_deg %.2f %.2f %.2f %.2f  runout_px %g %g %g %g  bulk %.4f  surface_px %.2f",
                 c.repose_deg[0], c.repose_deg[1], c.repose_deg[2], c.repose_deg[3], c.runout_px[0], c.runout_px[1],
-                c.runout_px[2], c.runout_px[3], c.bulk, c.surface_px, c.trap_rate, c.trap_deg, c.spot_busy_s);
+                c.runout_px[2], c.runout_px[3], c.bulk, c.surface_px);
+    for (const auto& [key, value] : c.grid.items())
+      std::printf("  %s %g", key.substr(key.find('.') + 1).c_str(), value.get<double>());
+    std::printf("\n");
     std::printf("silhouette error on the calibration scenes: %.5f before, %.5f after (DEM seed to seed %.5f)\n",
                 c.error_before, c.error_after, c.noise_floor);
     std::printf("picture_share %.3f %.3f %.3f %.3f: composition error %.5f before, %.5f after (DEM seed to seed %.5f)\n",

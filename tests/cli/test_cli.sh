@@ -251,6 +251,9 @@ if [ "$BULLET" = with-bullet ]; then
   # --spot also fits how long a landing spot stays busy (reusing the kept piles).
   expect 0 "calibrate spot" -- "$BIN" calibrate "${TINY[@]}" --grains 300,700 --scenes 1 --runs "$T/calruns" --spot --out "$T/cal4.json"
   if grep -q '"spot_busy_s"' "$T/cal4.json" && grep -q "spot_busy_s" "$T/out"; then ok; else bad "cal4: $(cat "$T/cal4.json")"; fi
+  # --fit names keys with a fit grid in the registry; another is refused before any run.
+  expect 2 "calibrate --fit of a key without a grid" -- "$BIN" calibrate "${TINY[@]}" --fit lattice.bulk --out "$T/cal5.json"
+  one_line; err_has "lattice.bulk"; absent "$T/cal5.json"
   # --shares also fits how much of the picture small grains take where they mix (lattice.picture_share).
   expect 0 "calibrate shares" -- "$BIN" calibrate "${TINY[@]}" --grains 300,700 --scenes 1 --runs "$T/calruns" --shares --out "$T/cal5.json"
   # (Recovering a known share is CalibrateFit.PictureSharesAreFittedToTheComposition's job.)

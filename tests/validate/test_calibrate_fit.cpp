@@ -78,14 +78,33 @@ TEST(CalibrateFit, SpotFindsTheBusyTimeOfAQueuingTruth) {
   CalibrateOptions opt;
   opt.grains = {3000};
   opt.scenes = 1;
-  opt.spot = true;
+  opt.fit = {"lattice.spot_busy_s"};
   std::vector<std::string> lines;
   Calibration c = calibrate(base, opt, make, [&](const std::string& l) { lines.push_back(l); });
-  std::printf("spot: %g s, error %.5f -> %.5f\n", c.spot_busy_s, c.error_before, c.error_after);
-  EXPECT_EQ(c.spot_busy_s, 0.008);
+  std::printf("spot: %g s, error %.5f -> %.5f\n", c.grid["lattice.spot_busy_s"].get<double>(), c.error_before, c.error_after);
+  EXPECT_EQ(c.grid["lattice.spot_busy_s"], 0.008);
   EXPECT_GT(c.error_before, 0.001);
   EXPECT_LT(c.error_after, 0.5 * c.error_before);
   EXPECT_EQ(calibration_json(base, c)["lattice"]["spot_busy_s"].get<double>(), 0.008);
+}
+
+// calibrate --fit takes exactly the keys the registry gives a fit grid, and
+// the calibration file holds every one of them.
+TEST(CalibrateFit, FitKeysAreTheRegistrysGridKeys) {
+  std::vector<std::string> grid;
+  for (const Field& f : scene_fields())
+    if (!f.fit_grid.empty()) grid.push_back(f.path);
+  EXPECT_EQ(grid, (std::vector<std::string>{"lattice.trap_rate", "lattice.trap_deg", "lattice.spot_busy_s"}));
+  EXPECT_NO_THROW(check_fit_keys(grid));
+  for (const std::string bad : {"lattice.bulk", "lattice.nope"}) {
+    try {
+      check_fit_keys({bad});
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("lattice.spot_busy_s"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // A "DEM" whose picture shows small grains at twice their area where they
