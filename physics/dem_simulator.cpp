@@ -457,27 +457,39 @@ void DemRun::freeze_stage() {
   fixed_spheres_.swap(near);
 }
 
-// Stage (every cycle, dem.static_bodies with dem.static_reach_diameters):
-// a static body with no dynamic grain within reach rests as an immovable
-// sphere; one that a dynamic grain comes near is a body again. A speed
-// lever, not the default: every static body solved at every step cost 4.4x
-// the immovable statics' time on the default scene at --scale 0.2, a reach
-// of 4 largest diameters 1.9x; but a sphere cannot yield to the slow
-// settling all-dynamic piles go through: verify-dem's quick heap then
-// differed from all-dynamic by 1.5-2.0 deg (mean of 2 seeds; one seed 3.3,
-// 2 diameters up to 6; docs/notebook/2026-12-03-static-reach.md).
+// Stage (every cycle, dem.static_bodies): a static body rests as an
+// immovable sphere while no grain is dynamic (nothing can push it: Bullet's
+// island sleeping, decided by the layer rule), and with
+// dem.static_reach_diameters while no dynamic grain is within reach; a body
+// again as soon as one is (insertion puts a grain 4 of its diameters above
+// the pile, at least 80 steps from touching it, and a cycle is 40). Sleeping
+// with nothing dynamic cut the stress catalogue's density-100:1 scene, whose
+// light grains sink for seconds while the pile waits, from 19x the immovable
+// statics' time. The reach is a speed lever, not the default: every static
+// body solved at every step cost 4.4x the immovable statics' time on the
+// default scene at --scale 0.2, a reach of 4 largest diameters 1.9x; but a
+// sphere cannot yield to the slow settling all-dynamic piles go through:
+// verify-dem's quick heap then differed from all-dynamic by 1.5-2.0 deg (mean
+// of 2 seeds; one seed 3.3, 2 diameters up to 6;
+// docs/notebook/2026-12-03-static-reach.md).
 void DemRun::wake_stage() {
-  if (layers_ != Layers::Three || !s_.dem.static_bodies || !(s_.dem.static_reach_diameters > 0)) return;
-  const double reach = s_.dem.static_reach_diameters * 2 * *std::max_element(radius_.begin(), radius_.end());
+  if (layers_ != Layers::Three || !s_.dem.static_bodies) return;
+  const bool limited = s_.dem.static_reach_diameters > 0;
+  if (!limited && (dynamic_.empty() ? statics_.empty() : still_statics_.empty())) return;  // nothing changes
+  // No limit: within reach of anything while anything is dynamic.
+  const double reach =
+      limited ? s_.dem.static_reach_diameters * 2 * *std::max_element(radius_.begin(), radius_.end()) : W_ + H_;
   // Dynamic bodies bucketed by columns of the reach's width.
   const int cells = int(std::ceil((W_ + 1) / reach)) + 1;
   std::vector<std::vector<Vec2>> near(size_t(std::max(cells, 1)));
   auto cell = [&](double x) { return std::clamp(int(std::floor(std::max(x, 0.0) / reach)), 0, cells - 1); };
-  for (int32_t id : dynamic_) {
-    const Vec2 p = world_.position(slot_[size_t(id)]);
-    near[size_t(cell(p.x()))].push_back(p);
-  }
+  if (limited)
+    for (int32_t id : dynamic_) {
+      const Vec2 p = world_.position(slot_[size_t(id)]);
+      near[size_t(cell(p.x()))].push_back(p);
+    }
   auto reached = [&](Vec2 p) {
+    if (!limited) return !dynamic_.empty();
     const int c = cell(p.x());
     for (int j = std::max(0, c - 1); j <= std::min(cells - 1, c + 1); ++j)
       for (const Vec2& q : near[size_t(j)])

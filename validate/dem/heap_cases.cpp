@@ -324,7 +324,8 @@ VerifyCase step(const VerifyOptions& opt) {
                "heaps at dem.step_diameters and at half of it, three-layer and all-dynamic, physics seeds " +
                    std::to_string(p.seeds.front()) + "–" + std::to_string(p.seeds.back()) +
                    ": the mean heap angles differ by at most the larger seed spread (at least 1°), and the "
-                   "silhouette error between the two steps (same seed) is at most 1.25× the seed-to-seed floor"};
+                   "silhouette error between the two steps (same seed) is at most 1.25× the larger seed-to-seed floor "
+                   "(a better-converged solve lets a small heap grow by fewer, larger avalanches: its seeds differ more)"};
   const double step = Scene{}.dem.step_diameters;
   std::vector<Scene> scenes;
   for (Layers l : {Layers::AllDynamic, Layers::Three})
@@ -340,18 +341,21 @@ VerifyCase step(const VerifyOptions& opt) {
     const Run* base = &runs[li * 2 * n];
     const Run* half = base + n;
     std::vector<double> a, b;
-    std::vector<const Run*> bases;
+    std::vector<const Run*> bases, halves;
     double err = 0;
     for (size_t i = 0; i < n; ++i) {
       a.push_back(heap_angle(base[i])), b.push_back(heap_angle(half[i]));
-      bases.push_back(base + i);
+      bases.push_back(base + i), halves.push_back(half + i);
       err += silhouette_error(base[i].class_map, half[i].class_map) / double(n);
     }
     const std::string name = layers_name(base->scene.dem.layers);
     c.checks.push_back(within(name + ": mean heap angle at half the step (" + fmt("%.1f", mean(a)) + "° at the step)", mean(b),
                               mean(a), std::max(1.0, std::max(spread(a), spread(b))), "°"));
-    const double floor = floor_error(bases);
-    c.checks.push_back(at_most(name + ": silhouette error between the steps over the floor (" + fmt("%.4f", floor) + ")",
+    // As the angles' spread: the floor of either step, whichever is larger.
+    const double floor_base = floor_error(bases), floor_half = floor_error(halves);
+    const double floor = std::max(floor_base, floor_half);
+    c.checks.push_back(at_most(name + ": silhouette error between the steps over the larger floor (" +
+                                   fmt("%.4f", floor_base) + " at the step, " + fmt("%.4f", floor_half) + " at half)",
                                err / floor, 1.25, "×"));
     c.notes.push_back(name + ": " + fmt("%.0f", base->simulate_s) + " s at the step, " + fmt("%.0f", half->simulate_s) +
                       " s at half of it (seed " + std::to_string(p.seeds.front()) + ")");
