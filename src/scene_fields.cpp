@@ -395,8 +395,8 @@ Field preset_field() {
 void flatten_area(const json& v, const std::string& path, const std::string& where,
                   std::vector<std::pair<std::string, std::string>>& out) {
   const auto& fields = scene_fields();
-  const auto field = std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return f.path == path; });
-  const bool leaf = field != fields.end();
+  const Field* field = find_field(path);
+  const bool leaf = field != nullptr;
   const bool prefix = std::any_of(fields.begin(), fields.end(),
                                   [&](const Field& f) { return f.path.rfind(path + ".", 0) == 0; });
   if (!leaf && prefix && v.is_object()) {
@@ -486,7 +486,7 @@ std::vector<Field> make_fields() {
   std::vector<Field> all;
   auto section = [&all](unsigned readers, bool area, std::vector<Field> keys) {
     for (Field& f : keys) {
-      if (f.readers == kPipeline) f.readers = readers;  // not declared otherwise in the entry
+      if (!f.readers) f.readers = readers;  // not declared otherwise in the entry
       f.area = f.area || area;
       all.push_back(std::move(f));
     }
@@ -725,9 +725,8 @@ const std::vector<Field>& scene_fields() {
 }
 
 bool area_key(const std::string& path) {
-  for (const Field& f : scene_fields())
-    if (f.path == path) return f.area;
-  return false;
+  const Field* f = find_field(path);
+  return f && f->area;
 }
 
 ordered_json keys_json() {

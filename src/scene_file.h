@@ -32,7 +32,7 @@ struct Field {
   std::string kind;                     // number, integer, boolean, choice, text, seed, per_class, colour, list
   double lo = 0, hi = 0;                // a number's range (lo == hi: none)
   std::vector<std::string> choices;     // a choice's names
-  unsigned readers = kPipeline;         // which stages read it (Reader bits)
+  unsigned readers = 0;                 // which stages read it (Reader bits; 0: its section's, make_fields)
   bool area = false;                    // an area of the region (regions[i]) may set it (paper §10, Fig. 17)
   // A lattice setting fitted to the DEM by trying values: `calibrate --fit
   // KEY` runs the whole fit once per value (the scene's own first) and keeps

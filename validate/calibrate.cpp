@@ -393,9 +393,11 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   // flanks end at, a busy spot which grains land first), so the whole fit
   // runs for every combination of the grids asked for: the scene's own values
   // first, then each grid value (one equal to the scene's own is not repeated).
+  std::vector<bool> asked(grid.size());
+  for (size_t i = 0; i < grid.size(); ++i) asked[i] = std::find(opt.fit.begin(), opt.fit.end(), grid[i]->path) != opt.fit.end();
   std::vector<std::vector<double>> candidates = {p.grid};
   for (size_t i = 0; i < grid.size(); ++i) {
-    if (std::find(opt.fit.begin(), opt.fit.end(), grid[i]->path) == opt.fit.end()) continue;
+    if (!asked[i]) continue;
     std::vector<double> values = {p.grid[i]};
     for (double v : grid[i]->fit_grid)
       if (std::find(values.begin(), values.end(), v) == values.end()) values.push_back(v);
@@ -418,7 +420,7 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
       q.grid = values;
       std::string what;
       for (size_t i = 0; i < grid.size(); ++i)
-        if (std::find(opt.fit.begin(), opt.fit.end(), grid[i]->path) != opt.fit.end())
+        if (asked[i])
           what += (what.empty() ? "" : ", ") + grid[i]->path + " " + json(values[i]).dump();
       log(what + ":");
       q = fit_all(q);
