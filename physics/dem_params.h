@@ -9,14 +9,19 @@
 
 namespace sandpic {
 
-// The time step of a scene: the fastest grain (its settling speed in water)
-// moves dem.step_diameters small-grain diameters per step.
-double dem_time_step(const Scene& s);
+// Which of the classes S1..S4 a run has grains of.
+using ClassSet = std::array<bool, kClasses>;
+constexpr ClassSet kAllClasses{true, true, true, true};
+
+// The time step of a scene: the fastest class in `present` (its settling
+// speed in water) moves dem.step_diameters of the smallest present class's
+// diameters per step.
+double dem_time_step(const Scene& s, const ClassSet& present = kAllClasses);
 
 // Bullet's radius (px) and mass of each class. Masses are scaled so that a
 // grain's weight per step stays far below 1 (see dem_masses in the .cpp).
 std::array<double, kClasses> dem_radii(const Scene& s);
-std::array<double, kClasses> dem_masses(const Scene& s);
+std::array<double, kClasses> dem_masses(const Scene& s, const ClassSet& present = kAllClasses);
 
 // The speed (px/s) under which a contact does not bounce.
 double dem_bounce_speed(const Water& w, double dt);

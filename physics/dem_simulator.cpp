@@ -27,6 +27,13 @@ namespace sandpic {
 
 namespace {
 
+ClassSet present_classes(const GrainSet& g) {
+  const auto counts = g.per_class();
+  ClassSet p{};
+  for (int k = 0; k < kClasses; ++k) p[size_t(k)] = counts[size_t(k)] > 0;
+  return p;
+}
+
 // The run ends when all but kUnsettled of the bodies have moved less than
 // kSettlePx (px) over the last kSettleCycles cycles: under 2 px/s at the
 // default time step.
@@ -139,8 +146,8 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
       model_(release_model(in.scene)),
       water_stage_(water_),
       radius_(dem_radii(in.scene)),
-      mass_(dem_masses(in.scene)),
-      dt_(dem_time_step(in.scene)),
+      mass_(dem_masses(in.scene, present_classes(in.grains))),
+      dt_(dem_time_step(in.scene, present_classes(in.grains))),
       small_d_(2 * *std::min_element(radius_.begin(), radius_.end())),
       heights_(in.scene.window.width + 1),
       world_(W_, H_, radius_, mass_, dem_material(in.scene, water_, dt_)),

@@ -34,5 +34,23 @@ TEST(DemParams, TimeStepFromTheFastestGrain) {
   EXPECT_NEAR(dem_time_step(s) * fastest, s.dem.step_diameters * smallest, 1e-12);
 }
 
+// Classes without grains do not set the step: heavy S3 and S4 that are not
+// in the run would shorten it for the light S1 and S2 that are.
+TEST(DemParams, TimeStepFromThePresentClassesOnly) {
+  Scene s;
+  s.grains.density_g_cm3 = {1.05, 1.05, 100, 100};
+  const Water w = water_model(s);
+  const ClassSet light{true, true, false, false};
+  const double fastest = std::max(w.terminal_px_s[0], w.terminal_px_s[1]);
+  const double smallest = std::min(2 * dem_radii(s)[0], 2 * dem_radii(s)[1]);
+  EXPECT_NEAR(dem_time_step(s, light) * fastest, s.dem.step_diameters * smallest, 1e-12);
+  EXPECT_GT(dem_time_step(s, light), 3 * dem_time_step(s));
+  EXPECT_DOUBLE_EQ(dem_time_step(s, kAllClasses), dem_time_step(s));
+  // The masses' unit follows: the heaviest present grain's weight a step is 1e-5.
+  const auto m = dem_masses(s, light);
+  const double dt = dem_time_step(s, light);
+  EXPECT_NEAR(std::max(m[0] * w.gravity_px_s2[0], m[1] * w.gravity_px_s2[1]) * dt, 1e-5, 1e-12);
+}
+
 }  // namespace
 }  // namespace sandpic
