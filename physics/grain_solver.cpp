@@ -1,4 +1,6 @@
 #include "physics/grain_solver.h"
+
+#include <algorithm>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 void GrainSolver::configure(btContactSolverInfo& info, int iterations) {
@@ -8,9 +10,19 @@ void GrainSolver::configure(btContactSolverInfo& info, int iterations) {
   info.m_splitImpulsePenetrationThreshold = 0;
 }
 
+// The rows in order of height, highest contact first (see the header: a
+// sweep carries a step's weight from the top of a pile to the floor).
 void GrainSolver::convertContacts(btPersistentManifold** manifolds, int count, const btContactSolverInfo& info) {
   bounces_.clear();
-  for (int i = 0; i < count; ++i) convert(manifolds[i], info);
+  order_.clear();
+  order_.reserve(size_t(count));
+  for (int i = 0; i < count; ++i) {
+    const btPersistentManifold* m = manifolds[i];
+    const btScalar y = m->getNumContacts() > 0 ? m->getContactPoint(0).getPositionWorldOnB().y() : btScalar(0);
+    order_.emplace_back(-y, i);
+  }
+  std::sort(order_.begin(), order_.end());  // ties by index: the same order at any thread count
+  for (const auto& [key, i] : order_) convert(manifolds[i], info);
 }
 
 namespace {
@@ -89,10 +101,13 @@ btScalar GrainSolver::solve_limited(btSolverConstraint& row, btScalar limit) {
   return r * r;
 }
 
-btScalar GrainSolver::solveSingleIteration(int, btCollisionObject**, int, btPersistentManifold**, int,
+btScalar GrainSolver::solveSingleIteration(int iteration, btCollisionObject**, int, btPersistentManifold**, int,
                                            btTypedConstraint**, int, const btContactSolverInfo&, btIDebugDraw*) {
   btScalar residual = 0;
-  for (int j = 0; j < m_tmpSolverContactConstraintPool.size(); ++j) {
+  // Symmetric Gauss-Seidel: top down on even iterations, bottom up on odd.
+  const int n = m_tmpSolverContactConstraintPool.size();
+  for (int i = 0; i < n; ++i) {
+    const int j = iteration % 2 ? n - 1 - i : i;
     const btSolverConstraint& c = m_tmpSolverContactConstraintPool[j];
     const btScalar r =
         resolveSingleConstraintRowLowerLimit(m_tmpSolverBodyPool[c.m_solverBodyIdA], m_tmpSolverBodyPool[c.m_solverBodyIdB], c);

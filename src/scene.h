@@ -181,7 +181,8 @@ struct Scene {
     int solver_iterations = 10;
     double release_rate = 4000;    // grains released per simulated second
     // Rolling resistance μ_r: the torque at a contact is at most μ_r·R_r·N.
-    // 0.1 piles a two-size heap at 31° at friction 0.4 (verify-dem, docs/dem.md).
+    // 0.1 piles verify-dem's full two-size heap (all-dynamic, friction 0.4) at
+    // 37° and 34° (seeds 1, 2; docs/notebook/2026-12-04-solver-order.md).
     double rolling_resistance = 0.1;
     bool water = true;             // drag and buoyancy of the device's water
     double water_density_g_cm3 = 1.0;

@@ -91,6 +91,15 @@ std::vector<T> list_option(const std::string& option, const std::string& text, F
   return out;
 }
 
+// "three,bcre,...": the DEM's layer models, by their scene names.
+inline std::vector<Layers> layers_list(const std::string& text) {
+  return list_option<Layers>("--layers", text, [](const std::string& i) {
+    for (Layers l : {Layers::Three, Layers::Bcre, Layers::AllDynamic})
+      if (layers_name(l) == i) return l;
+    throw InputError("--layers: unknown model '" + i + "' (three, bcre or all-dynamic)");
+  });
+}
+
 inline int64_t positive(const std::string& option, const std::string& item, int64_t max) {
   size_t used = 0;
   long long v = std::stoll(item, &used);

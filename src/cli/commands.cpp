@@ -243,14 +243,6 @@ struct BenchCommand {
   }
 };
 
-std::vector<Layers> layers_list(const std::string& text) {
-  return list_option<Layers>("--layers", text, [](const std::string& i) {
-    for (Layers l : {Layers::Three, Layers::Bcre, Layers::AllDynamic})
-      if (layers_name(l) == i) return l;
-    throw InputError("--layers: unknown model '" + i + "' (three, bcre or all-dynamic)");
-  });
-}
-
 // paper Fig. 12: the DEM's layer models side by side at several grain counts.
 struct BenchLayersCommand {
   SceneOptions scene;

@@ -16,7 +16,7 @@ namespace {
 
 struct VerifyCommand {
   bool quick = false;
-  std::string out, only;
+  std::string out, only, layers = "three,bcre";
   std::vector<std::string> sets;
   int threads = 0;
 
@@ -30,6 +30,8 @@ struct VerifyCommand {
     cmd->add_option("--set", sets, "KEY=VALUE on every pile case's scene (heap, creep, layers, step), as render's "
                                    "--set; repeatable; not the keys the cases vary (layers, friction, rolling "
                                    "resistance, seeds)");
+    cmd->add_option("--layers", layers, "the layer models the layers case holds against all-dynamic, comma-separated")
+        ->capture_default_str();
     cmd->add_option("--threads", threads, "worker threads (0: all cores); the results do not depend on it")
         ->check(CLI::Range(0, 1024));
     cmd->callback([this] { run(); });
@@ -44,6 +46,7 @@ struct VerifyCommand {
     check_case_ids(opt.only);  // before anything is written
     opt.sets = sets;
     check_pile_settings(opt.sets);
+    opt.layer_models = layers_list(layers);
     check_folder(out);
     const bool tty = Progress::stderr_is_terminal();
     opt.log = [tty](const std::string& line) {

@@ -219,6 +219,8 @@ if [ "$BULLET" = with-bullet ]; then
   expect 2 "verify-dem --set of no key" -- "$BIN" verify-dem --out "$T/vd3" --only heap --set dem.nope=1
   err_has "dem.nope"
   absent "$T/vd3"
+  expect 2 "verify-dem --layers of no model" -- "$BIN" verify-dem --out "$T/vd3" --only layers --layers three,sand
+  one_line; err_has "sand"; absent "$T/vd3"
   # paper Fig. 12: the layer models side by side, as a table, CSV and plot.
   expect 0 "bench-layers" -- "$BIN" bench-layers "${TINY[@]}" --grains 100,200 --seeds 1,2 --all-dynamic-max 100 \
     --csv "$T/fig12.csv" --plot "$T/fig12.png"

@@ -273,9 +273,12 @@ VerifyCase layers(const VerifyOptions& opt) {
   Scene base;
   apply_scale(base, p.scene_scale);
   if (p.scene_region > 0) base.region.height = p.scene_region;
+  std::vector<Layers> models = {Layers::AllDynamic};
+  for (Layers l : opt.layer_models)
+    if (l != Layers::AllDynamic && std::find(models.begin(), models.end(), l) == models.end()) models.push_back(l);
   std::vector<Scene> scenes;
   for (double mu : {0.1, 0.9})
-    for (Layers l : {Layers::AllDynamic, Layers::Three, Layers::Bcre})
+    for (Layers l : models)
       for (uint64_t seed : p.seeds) scenes.push_back(with(base, l, mu, base.dem.rolling_resistance, seed));
   const std::vector<Run> runs = run_all(scenes, opt, "layers");
   VerifyPlot plot{"Scene slope by layer model", "friction", "scene slope (deg)", {}};
@@ -291,7 +294,7 @@ VerifyCase layers(const VerifyOptions& opt) {
     };
     const std::vector<double> all = slopes(Layers::AllDynamic);
     const double floor = floor_error(by[Layers::AllDynamic]);
-    for (Layers l : {Layers::AllDynamic, Layers::Three, Layers::Bcre}) {
+    for (Layers l : models) {
       const std::vector<double> v = slopes(l);
       PlotSeries& line = lines[l];
       line.label = layers_name(l), line.points = true;
@@ -306,7 +309,7 @@ VerifyCase layers(const VerifyOptions& opt) {
       c.checks.push_back(at_most(name + ": silhouette error against all-dynamic over its floor (" + fmt("%.4f", floor) + ")",
                                  err / floor, 1.25, "×"));
     }
-    for (const Run* r : {by[Layers::AllDynamic].front(), by[Layers::Three].front()})
+    for (const Run* r : {by[Layers::AllDynamic].front(), by[models[models.size() > 1 ? 1 : 0]].front()})
       c.pictures.emplace_back(layers_name(r->scene.dem.layers) + ", friction " + fmt("%.1f", mu) + ", seed " +
                                   std::to_string(*r->scene.physics_seed) + ", " + fmt("%.0f", r->simulate_s) + " s",
                               r->picture);

@@ -24,6 +24,8 @@ struct VerifyOptions {
   // "key=value" set on every pile case's scene (heap, creep, layers, step),
   // after the keys the cases vary (check_pile_settings refuses those).
   std::vector<std::string> sets;
+  // The layer models the layers case holds against all-dynamic.
+  std::vector<Layers> layer_models = {Layers::Three, Layers::Bcre};
   std::function<void(const std::string&)> log = [](const std::string&) {};
 };
 
