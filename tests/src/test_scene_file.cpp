@@ -7,6 +7,7 @@
 
 #include "src/errors.h"
 #include "src/scene_file.h"
+#include "tests/test_folder.h"
 
 namespace sandpic {
 namespace {
@@ -246,7 +247,7 @@ TEST(SceneFile, ScaleKeepsTheRunOut) {
 }
 
 TEST(SceneFile, CalibrationFileErrorsNameTheKeyOrFile) {
-  const auto dir = std::filesystem::temp_directory_path();
+  const std::filesystem::path dir = test::fresh_folder();
   Scene s;
   s.lattice.calibration = (dir / "sandpic-no-such-calibration.json").string();
   try {
@@ -304,11 +305,15 @@ TEST(SceneRegistry, EveryKeyDeclaresWhatItIsAndWhoReadsIt) {
       EXPECT_GE(d.get<double>(), f.lo);
       EXPECT_LE(d.get<double>(), f.hi);
     }
-    if (f.kind == "choice") EXPECT_NE(std::find(f.choices.begin(), f.choices.end(), d.get<std::string>()), f.choices.end());
+    if (f.kind == "choice") {
+      EXPECT_NE(std::find(f.choices.begin(), f.choices.end(), d.get<std::string>()), f.choices.end());
+    }
     Scene s;
     EXPECT_NO_THROW(f.set(s, d));  // a default is a value the key accepts
     const bool backend = f.path.starts_with("lattice.") || f.path.starts_with("dem.");
-    if (!backend) EXPECT_TRUE(read_in_mode(f, Mode::Lattice) || read_in_mode(f, Mode::Dem));
+    if (!backend) {
+      EXPECT_TRUE(read_in_mode(f, Mode::Lattice) || read_in_mode(f, Mode::Dem));
+    }
   }
   // An area of the region makes its own initialization and segmentation
   // (paper §10, Fig. 17), nothing else.

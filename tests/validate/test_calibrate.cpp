@@ -8,6 +8,7 @@
 #include "lattice/lattice_simulator.h"
 #include "src/errors.h"
 #include "src/init/init.h"
+#include "tests/test_folder.h"
 #include "validate/calibrate.h"
 
 namespace sandpic {
@@ -56,7 +57,7 @@ TEST(Calibrate, FitLowersTheSilhouetteErrorAndAppliesThroughTheScene) {
   EXPECT_EQ(c.repose_deg[2], c.repose_deg[3]);
   EXPECT_GT(c.bulk, 1.0);  // the DEM's piles pack looser than units.packing
 
-  const auto path = std::filesystem::temp_directory_path() / "sandpic-test-calibration.json";
+  const auto path = std::filesystem::path(test::fresh_folder()) / "calibration.json";
   std::ofstream(path) << calibration_json(base, c).dump(2);
   Scene s;
   s.lattice.calibration = path.string();

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "lattice/lattice_simulator.h"
+#include "tests/test_folder.h"
 #include "validate/calibrate.h"
 
 namespace sandpic {
@@ -143,9 +144,7 @@ TEST(CalibrateFit, PictureSharesAreFittedToTheComposition) {
 // --runs: the "DEM" piles are kept and the second calibration reads them
 // back instead of running them, and fits the same values.
 TEST(CalibrateFit, KeptPilesAreReusedWhileTheirDigestHolds) {
-  const auto dir = std::filesystem::temp_directory_path() / "sandpic-test-calibrate-runs";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = test::fresh_folder();
   Scene base;
   CalibrateOptions opt;
   opt.grains = {3000};

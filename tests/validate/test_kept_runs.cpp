@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "lattice/lattice_simulator.h"
+#include "tests/test_folder.h"
 #include "validate/kept_runs.h"
 
 namespace sandpic {
@@ -15,15 +16,8 @@ Scene small() {
   return s;
 }
 
-std::string fresh_dir() {
-  auto d = std::filesystem::temp_directory_path() / "sandpic-test-kept-runs";
-  std::filesystem::remove_all(d);
-  std::filesystem::create_directories(d);
-  return d.string();
-}
-
 TEST(KeptRuns, AKeptRunComesBackWithItsPictureAndClassMap) {
-  const std::string dir = fresh_dir();
+  const std::string dir = test::fresh_folder();
   const Scene s = small();
   RunResult r = run_pipeline(s, *make_lattice_simulator(), RunOptions{});
   keep_run(dir, "a", r);
@@ -38,7 +32,7 @@ TEST(KeptRuns, AKeptRunComesBackWithItsPictureAndClassMap) {
 }
 
 TEST(KeptRuns, AnotherSceneOrABrokenFileIsNotReused) {
-  const std::string dir = fresh_dir();
+  const std::string dir = test::fresh_folder();
   const Scene s = small();
   keep_run(dir, "a", run_pipeline(s, *make_lattice_simulator(), RunOptions{}));
   Scene other = s;

@@ -6,6 +6,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "src/output.h"
+#include "tests/test_folder.h"
 #include "validate/stress.h"
 
 namespace sandpic {
@@ -17,11 +18,7 @@ struct StressJudge : ::testing::Test {
   StressCase c;
 
   void SetUp() override {
-    dir = (std::filesystem::temp_directory_path() /
-           ("sandpic-stress-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name())))
-              .string();
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
+    dir = test::fresh_folder();
     f = {dir + "/picture.png", dir + "/stats.json", dir + "/stderr.txt", "old picture\n"};
     write_atomic(f.picture, f.sentinel);
     write_atomic(f.err, "");

@@ -5,6 +5,7 @@
 
 #include "lattice/lattice_simulator.h"
 #include "src/errors.h"
+#include "tests/test_folder.h"
 #include "validate/report_html.h"
 #include "validate/validation.h"
 
@@ -24,13 +25,6 @@ Scene small_scene() {
   return s;
 }
 
-std::string temp_dir(const std::string& name) {
-  auto d = std::filesystem::temp_directory_path() / ("sandpic-test-" + name);
-  std::filesystem::remove_all(d);
-  std::filesystem::create_directories(d);
-  return d.string();
-}
-
 TEST(Validation, MeanComparisonAveragesPsnrThroughTheMeanSquaredError) {
   Comparison a, b;
   a.psnr_db = 20, b.psnr_db = 30;  // MSE 650.25 and 65.025
@@ -45,7 +39,7 @@ TEST(Validation, MeanComparisonAveragesPsnrThroughTheMeanSquaredError) {
 }
 
 TEST(Validation, RunsTheEnsembleKeepsItAndReportsEveryMetric) {
-  const std::string dir = temp_dir("validation");
+  const std::string dir = test::fresh_folder();
   ValidateOptions opt;
   opt.cache_dir = dir;
   opt.sweep_dem = true;

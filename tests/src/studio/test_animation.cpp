@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "tests/src/studio/studio_test_util.h"
+#include "tests/test_folder.h"
 
 namespace sandpic::studio {
 namespace {
@@ -27,7 +27,7 @@ std::vector<cv::Mat> frames_of(const Reply& r) {
 double mean_abs_diff(const cv::Mat& a, const cv::Mat& b) { return cv::mean(cv::abs(a - b) + cv::abs(b - a))[0]; }
 
 TEST(StudioAnimation, FramesFromAFullRegionToThePreview) {
-  const std::string root = test::studio_folder("anim");
+  const std::string root = test::fresh_folder("anim");
   AnimationRequest req;
   req.frames = 6;
   req.scale = 0.2;
@@ -54,7 +54,7 @@ TEST(StudioAnimation, FramesFromAFullRegionToThePreview) {
 }
 
 TEST(StudioAnimation, AnMp4ToDownload) {
-  const std::string root = test::studio_folder("mp4");
+  const std::string root = test::fresh_folder("mp4");
   const AnimationRequest req = animation_request("4", "0.1", "", "mp4");
   const Reply r = animation("{}", root, req);
   ASSERT_EQ(r.status, 200);

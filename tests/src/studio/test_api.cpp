@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "tests/src/studio/studio_test_util.h"
+#include "tests/test_folder.h"
 
 namespace sandpic::studio {
 namespace {
@@ -26,7 +26,7 @@ cv::Mat decode(const Reply& r) {
 }
 
 TEST(StudioApi, ABadValueIsA400NamingItsKey) {
-  const std::string root = test::studio_folder("badkey");
+  const std::string root = test::fresh_folder("badkey");
   const Reply r = reply_of([&] { return preview(R"({"physics": {"friction": -1}})", root); });
   EXPECT_EQ(r.status, 400);
   const json body = json::parse(r.body);
@@ -52,7 +52,7 @@ TEST(StudioApi, KeyOfTakesTheSceneKey) {
 }
 
 TEST(StudioApi, APreviewIsAPngOfTheWindowsSize) {
-  const std::string root = test::studio_folder("preview");
+  const std::string root = test::fresh_folder("preview");
   const Reply r = preview("{}", root, 0.2);  // the default scene at 200 x 140
   EXPECT_EQ(r.status, 200);
   EXPECT_EQ(r.content_type, "image/png");
@@ -89,7 +89,7 @@ TEST(StudioApi, ARequestPastTheSizeBoundIsRefusedUnread) {
 }
 
 TEST(StudioApi, PathsOutsideTheWorkingFolderAreRefused) {
-  const std::string root = test::studio_folder("paths");
+  const std::string root = test::fresh_folder("paths");
   for (const char* body : {R"({"init": {"method": "halftone", "image": "../secret.png"}})",
                            R"({"init": {"image": "/etc/passwd"}})",
                            R"({"render": {"background": "a/../../b.png"}})"}) {
@@ -125,7 +125,7 @@ TEST(StudioApi, ACompleteSceneHasEveryKey) {
 // paper §3: the page paints cells by their number; the units list the
 // scene's own cells in that numbering, with the classes an edit gave them.
 TEST(StudioApi, UnitsListTheCellsWithTheirClasses) {
-  const std::string root = test::studio_folder("cells");
+  const std::string root = test::fresh_folder("cells");
   const json plain = json::parse(units("{}", root).body);
   ASSERT_GT(plain["tessellation"].size(), 10u);
   for (const auto& c : plain["tessellation"]) {
@@ -168,7 +168,7 @@ TEST(StudioApi, OnlyLoopbackHostsAndTheStudiosOwnPage) {
 // paper §4.2: a picture dropped on the page is kept in the studio's folder,
 // named by its content, and a scene halftones it by that path.
 TEST(StudioApi, APictureDroppedIsKeptAndHalftoned) {
-  const std::string root = test::studio_folder("image");
+  const std::string root = test::fresh_folder("image");
   cv::Mat img(60, 80, CV_8UC3);
   cv::randu(img, 0, 255);
   std::vector<uchar> jpg;

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "src/studio/api.h"
-#include "tests/src/studio/studio_test_util.h"
+#include "tests/test_folder.h"
 
 namespace sandpic::studio {
 namespace {
@@ -26,7 +26,7 @@ std::shared_ptr<const RenderJob> wait_done(const Renders& r, int id) {
 }
 
 TEST(StudioRenders, AFinishedRenderIsKeptOnDisk) {
-  const std::string dir = test::studio_folder("renders") + "/studio-renders";
+  const std::string dir = test::fresh_folder("renders") + "/studio-renders";
   Renders renders(dir);
   // The lattice mode: the same path as the DEM's, in a fraction of the time.
   const int id = renders.start(scaled(scene_from_request("{}", "."), 0.2));
@@ -48,7 +48,7 @@ TEST(StudioRenders, AFinishedRenderIsKeptOnDisk) {
 }
 
 TEST(StudioRenders, OneAtATime) {
-  Renders renders(test::studio_folder("one") + "/r");
+  Renders renders(test::fresh_folder("one") + "/r");
   const Scene s = scene_from_request("{}", ".");  // full size: long enough to overlap
   const int id = renders.start(s);
   EXPECT_THROW(renders.start(s), Busy);
@@ -57,7 +57,7 @@ TEST(StudioRenders, OneAtATime) {
 }
 
 TEST(StudioRenders, TheDemModeNeedsBullet) {
-  Renders renders(test::studio_folder("dem") + "/r");
+  Renders renders(test::fresh_folder("dem") + "/r");
   const Scene s = scene_from_request(R"({"mode": "dem"})", ".");
 #if SANDPIC_WITH_BULLET
   // This build has the DEM: a small final render finishes with every grain.
@@ -78,7 +78,7 @@ TEST(StudioRenders, TheDemModeNeedsBullet) {
 // The page's cancel button: the render stops within a step cycle, says so,
 // writes nothing, and the next one may start.
 TEST(StudioRenders, ACancelledRenderStopsAndWritesNothing) {
-  const std::string dir = test::studio_folder("cancel") + "/r";
+  const std::string dir = test::fresh_folder("cancel") + "/r";
   Renders renders(dir);
   EXPECT_FALSE(renders.cancel(1));  // no such render
 #if SANDPIC_WITH_BULLET

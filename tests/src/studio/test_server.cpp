@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/scene_file.h"
-#include "tests/src/studio/studio_test_util.h"
+#include "tests/test_folder.h"
 
 namespace sandpic::studio {
 namespace {
@@ -27,7 +27,7 @@ struct Running {
 ServerOptions options(const std::string& name) {
   ServerOptions opt;
   opt.port = 0;
-  opt.root = test::studio_folder(name);
+  opt.root = test::fresh_folder(name);
   return opt;
 }
 
