@@ -14,8 +14,8 @@ using ClassSet = std::array<bool, kClasses>;
 constexpr ClassSet kAllClasses{true, true, true, true};
 
 // The time step of a scene: the fastest class in `present` (its settling
-// speed in water) moves dem.step_diameters of the smallest present class's
-// diameters per step.
+// speed in water; no class present: every class) moves dem.step_diameters of
+// the smallest present class's diameters per step.
 double dem_time_step(const Scene& s, const ClassSet& present = kAllClasses);
 
 // Bullet's radius (px) and mass of each class. Masses are scaled so that a

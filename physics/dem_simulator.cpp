@@ -90,6 +90,7 @@ class DemRun {
   std::vector<Outlet> outlets_;
   std::vector<int32_t> unit_of_order_;
   WaterStage water_stage_;
+  const ClassSet present_;  // the classes the run has grains of: its step and masses
   std::array<double, kClasses> radius_, mass_;
   double dt_, small_d_, sub_dt_ = 0;
   LayerRule rule_;
@@ -145,9 +146,10 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
       water_(water_model(in.scene)),
       model_(release_model(in.scene)),
       water_stage_(water_),
+      present_(present_classes(in.grains)),
       radius_(dem_radii(in.scene)),
-      mass_(dem_masses(in.scene, present_classes(in.grains))),
-      dt_(dem_time_step(in.scene, present_classes(in.grains))),
+      mass_(dem_masses(in.scene, present_)),
+      dt_(dem_time_step(in.scene, present_)),
       small_d_(2 * *std::min_element(radius_.begin(), radius_.end())),
       heights_(in.scene.window.width + 1),
       world_(W_, H_, radius_, mass_, dem_material(in.scene, water_, dt_)),

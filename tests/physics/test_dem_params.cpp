@@ -46,6 +46,8 @@ TEST(DemParams, TimeStepFromThePresentClassesOnly) {
   EXPECT_NEAR(dem_time_step(s, light) * fastest, s.dem.step_diameters * smallest, 1e-12);
   EXPECT_GT(dem_time_step(s, light), 3 * dem_time_step(s));
   EXPECT_DOUBLE_EQ(dem_time_step(s, kAllClasses), dem_time_step(s));
+  EXPECT_DOUBLE_EQ(dem_time_step(s, ClassSet{}), dem_time_step(s));  // no grains: every class
+  EXPECT_EQ(dem_masses(s, ClassSet{}), dem_masses(s));
   // The masses' unit follows: the heaviest present grain's weight a step is 1e-5.
   const auto m = dem_masses(s, light);
   const double dt = dem_time_step(s, light);
