@@ -156,7 +156,7 @@ namespace {
 
 // docs/scene-reference.md's table of every key, made from the registry (a
 // test checks the page against it): its default, whether --scale multiplies
-// it, which stages read it (all: the shared pipeline), whether an area may
+// it, which stages read it (pipeline: the shared one), whether an area may
 // set it, the values calibrate --fit tries, its help.
 std::string reference_table() {
   auto cell = [](std::string v) {
@@ -166,14 +166,14 @@ std::string reference_table() {
   };
   std::ostringstream o;
   o << "| key | default | scaled | read by | area | fit grid | meaning |\n| --- | --- | --- | --- | --- | --- | --- |\n";
-  const Scene defaults;
-  for (const Field& f : scene_fields()) {
+  // From keys_json, the studio's list of the same keys: one naming of the readers.
+  for (const ordered_json& k : keys_json()) {
     std::string readers;
-    for (auto [bit, name] : {std::pair{kPipeline, "all"}, {kLattice, "lattice"}, {kDem, "dem"}, {kRender, "render"}})
-      if (f.readers & bit) readers += (readers.empty() ? "" : ", ") + std::string(name);
-    o << "| `" << f.path << "` | `" << cell(f.get(defaults).dump()) << "` | " << (f.px ? "yes" : "") << " | "
-      << readers << " | " << (f.area ? "yes" : "") << " | "
-      << (f.fit_grid.empty() ? "" : cell(ordered_json(f.fit_grid).dump())) << " | " << cell(f.help) << " |\n";
+    for (const auto& r : k["read_by"]) readers += (readers.empty() ? "" : ", ") + r.get<std::string>();
+    o << "| `" << k["key"].get<std::string>() << "` | `" << cell(k["default"].dump()) << "` | "
+      << (k["scaled"].get<bool>() ? "yes" : "") << " | " << readers << " | " << (k["area"].get<bool>() ? "yes" : "")
+      << " | " << (k.contains("fit_grid") ? cell(k["fit_grid"].dump()) : "") << " | "
+      << cell(k["help"].get<std::string>()) << " |\n";
   }
   return o.str();
 }
