@@ -172,7 +172,6 @@ struct CalibrateCommand {
     if (!fit.empty()) opt.fit = list_option<std::string>("--fit", fit, [](const std::string& k) { return k; });
     if (trap) opt.fit.insert(opt.fit.end(), {"lattice.trap_rate", "lattice.trap_deg"});
     if (spot) opt.fit.push_back("lattice.spot_busy_s");
-    check_fit_keys(opt.fit);
     opt.grains = list_option<int64_t>("--grains", grains, [](const std::string& i) {
       return int64_t(positive("--grains", i, 10000000));
     });

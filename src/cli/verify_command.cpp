@@ -43,9 +43,7 @@ struct VerifyCommand {
     opt.quick = quick;
     opt.threads = threads;
     if (!only.empty()) opt.only = list_option<std::string>("--only", only, [](const std::string& i) { return i; });
-    check_case_ids(opt.only);  // before anything is written
-    opt.sets = sets;
-    check_pile_settings(opt.sets);
+    opt.sets = sets;  // run_verify_dem checks these and the case ids before any run
     opt.layer_models = layers_list(layers);
     check_folder(out);
     const bool tty = Progress::stderr_is_terminal();

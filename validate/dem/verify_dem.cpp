@@ -73,6 +73,8 @@ const std::vector<std::string>& verify_case_ids() {
   return ids;
 }
 
+namespace {
+
 void check_case_ids(const std::vector<std::string>& only) {
   for (const std::string& id : only)
     if (std::find(verify_case_ids().begin(), verify_case_ids().end(), id) == verify_case_ids().end())
@@ -93,6 +95,8 @@ void check_pile_settings(const std::vector<std::string>& sets) {
     apply_setting(s, a);  // an unknown key or a bad value: its own error
   }
 }
+
+}  // namespace
 
 VerifyReport run_verify_dem(const VerifyOptions& opt) {
   check_case_ids(opt.only);

@@ -22,7 +22,7 @@ struct VerifyOptions {
   int threads = 0;                 // 0: every core (TBB's default)
   std::vector<std::string> only;   // case ids; empty: all
   // "key=value" set on every pile case's scene (heap, creep, layers, step),
-  // after the keys the cases vary (check_pile_settings refuses those).
+  // after the keys the cases vary (run_verify_dem refuses those).
   std::vector<std::string> sets;
   // The layer models the layers case holds against all-dynamic.
   std::vector<Layers> layer_models = {Layers::Three, Layers::Bcre};
@@ -70,17 +70,14 @@ struct VerifyReport {
   bool pass() const;
 };
 
-// Throws InputError (exit 2) for a setting that is not a scene key's, or one
-// the pile cases vary themselves (dem.layers, physics.friction,
-// dem.rolling_resistance, the seeds, the mode).
-void check_pile_settings(const std::vector<std::string>& sets);
-
 // The case ids, in the order they run: settling, restitution, incline,
 // rolling, notch, heap, creep, layers, step.
 const std::vector<std::string>& verify_case_ids();
 
-// Throws InputError naming an id that is not a case.
-void check_case_ids(const std::vector<std::string>& only);
+// Throws InputError (exit 2), before any run, for an id of opt.only that is
+// not a case and for a setting of opt.sets that is not a scene key's or is one
+// the pile cases vary themselves (dem.layers, physics.friction,
+// dem.rolling_resistance, the seeds, the mode).
 VerifyReport run_verify_dem(const VerifyOptions& opt);
 
 ordered_json verify_json(const VerifyReport& r);
