@@ -52,6 +52,18 @@ std::string mode_name(Mode m) { return m == Mode::Lattice ? "lattice" : "dem"; }
 
 }  // namespace
 
+Prepared prepare(const Scene& s, ordered_json* timing) {
+  Clock clock;
+  Prepared p;
+  p.init = initialize(s);
+  if (timing) (*timing)["init_s"] = clock.lap();
+  p.seg = segment(s, p.init.tessellation);
+  if (timing) (*timing)["segment_s"] = clock.lap();
+  p.order = falling_order(p.seg, p.init.grains, s.layout());
+  if (timing) (*timing)["order_s"] = clock.lap();
+  return p;
+}
+
 RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt) {
   validate(given);
   const Scene s = given.mode == Mode::Lattice ? with_calibration(given) : given;
@@ -61,12 +73,9 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
   ordered_json timing;
   cv::Mat background = load_background(s);  // read early: a bad file fails before the work
   cv::Mat figures = load_figures(s);
-  Initialization init = initialize(s);
-  timing["init_s"] = clock.lap();
-  Segmentation seg = segment(s, init.tessellation);
-  timing["segment_s"] = clock.lap();
-  FallingOrder order = falling_order(seg, init.grains, s.layout());
-  timing["order_s"] = clock.lap();
+  timing["load_s"] = clock.lap();
+  const Prepared prepared = prepare(s, &timing);
+  const auto& [init, seg, order] = prepared;
 
   Progress progress(opt.progress, opt.fraction, opt.cancel);
   SimInput in{s, init.grains, seg, order, opt.stages};

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "src/estimate.h"
+#include "src/init/init.h"
+#include "src/segment/segment.h"
 #include "src/simulator.h"
 #include "src/stages.h"
 
@@ -38,6 +40,18 @@ struct RunResult {
   Stages stages;
   std::string grains;  // with RunOptions::grains: the grain table (src/grain_table.h), CSV
 };
+
+// The stages before the simulation, what every backend starts from:
+// initialization (paper §4), segmentation into units (§5) and the falling
+// order (§6). Calibration and tests simulate these many times over.
+struct Prepared {
+  Initialization init;
+  Segmentation seg;
+  FallingOrder order;
+  SimInput input(const Scene& s) const { return SimInput{s, init.grains, seg, order}; }
+};
+// `timing`, if given, gets init_s, segment_s and order_s.
+Prepared prepare(const Scene& s, ordered_json* timing = nullptr);
 
 // Throws InputError (bad scene or file), SimulationError (a grain lost, a
 // NaN) or Cancelled (opt.cancel set): nothing is returned that should not be written.

@@ -5,6 +5,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "src/pipeline.h"
 #include "src/render.h"
 #include "src/scene.h"
 #include "src/simulator.h"
@@ -29,11 +30,9 @@ inline Scene one_ellipse_scene(int width = 400, int height = 300, int region = 8
 
 // The pipeline up to the simulation, without rendering: a backend's raw result.
 inline SimResult simulate_scene(const Scene& s, Simulator& sim) {
-  Initialization init = initialize(s);
-  Segmentation seg = segment(s, init.tessellation);
-  FallingOrder order = falling_order(seg, init.grains, s.layout());
+  const Prepared p = prepare(s);
   Progress quiet(false);
-  return sim.simulate(SimInput{s, init.grains, seg, order}, quiet);
+  return sim.simulate(p.input(s), quiet);
 }
 
 // A picture's blank pixels in the region and sand pixels below it: a first

@@ -12,10 +12,8 @@
 #include <unsupported/Eigen/NumericalDiff>
 
 #include "src/errors.h"
-#include "src/falling_order.h"
 #include "src/init/init.h"
 #include "src/pipeline.h"
-#include "src/segment/segment.h"
 #include "validate/compare.h"
 #include "validate/kept_runs.h"
 #include "validate/silhouette.h"
@@ -28,9 +26,7 @@ namespace {
 // simulation, and the DEM piles' outlines are what it is fitted to.
 struct Target {
   Scene scene;
-  Initialization init;
-  Segmentation seg;
-  FallingOrder order;
+  Prepared prepared;  // the stages before the simulation, once for every run
   std::vector<std::vector<double>> dem;  // silhouette per DEM physics seed
   std::vector<cv::Mat> dem_maps;         // class map per DEM physics seed
 };
@@ -120,7 +116,7 @@ class Fit {
     apply(p, s);
     Progress quiet(false);
     ++runs_;
-    return lattice_.simulate(SimInput{s, t.init.grains, t.seg, t.order}, quiet).class_map;
+    return lattice_.simulate(t.prepared.input(s), quiet).class_map;
   }
 
   std::vector<Target>& targets_;
@@ -298,9 +294,7 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
   for (Scene& s : calibration_scenes(base, opt)) {
     Target t;
     t.scene = s;
-    t.init = initialize(s);
-    t.seg = segment(s, t.init.tessellation);
-    t.order = falling_order(t.seg, t.init.grains, s.layout());
+    t.prepared = prepare(s);
     t.dem.resize(opt.physics_seeds.size());
     targets.push_back(std::move(t));
   }
@@ -313,7 +307,7 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
     Scene s = targets[j / per].scene;
     s.mode = Mode::Dem;
     s.physics_seed = opt.physics_seeds[j % per];
-    const std::string label = "dem-" + std::to_string(targets[j / per].init.grains.size()) + "-layout-" +
+    const std::string label = "dem-" + std::to_string(targets[j / per].prepared.init.grains.size()) + "-layout-" +
                               std::to_string(s.layout()) + "-seed-" + std::to_string(s.physics_rng());
     std::optional<KeptRun> kept = load_kept(opt.runs_dir, label, s);
     if (kept && !kept->class_map.empty()) {
@@ -349,7 +343,7 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
     c.scenes.push_back({{"layout_seed", s.layout()},
                         {"tessellation", s.init.method == InitMethod::Halftone ? init["method"] : init["tessellation"]},
                         {"window", {s.window.width, s.window.height}},
-                        {"grains", int64_t(targets[t].init.grains.size())}});
+                        {"grains", int64_t(targets[t].prepared.init.grains.size())}});
   }
   c.noise_floor = floor_n ? floor_sum / floor_n : 0;
   c.composition_floor = floor_n ? c.composition_floor / floor_n : 0;
