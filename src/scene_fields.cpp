@@ -12,6 +12,52 @@
 #include "src/scene_file.h"
 
 namespace sandpic {
+
+namespace {
+
+// A number, or each number of a class's, mapped by `op` into the key's range.
+template <class Op>
+ordered_json each_number(const Field& f, const ordered_json& value, Op op) {
+  auto one = [&](const ordered_json& v) -> ordered_json {
+    double d = op(v.get<double>());
+    if (f.lo < f.hi) d = std::clamp(d, f.lo, f.hi);
+    return f.kind == "integer" ? ordered_json(int64_t(std::floor(d))) : ordered_json(d);
+  };
+  if (value.is_number()) return one(value);
+  if (!value.is_array()) return nullptr;
+  ordered_json out = ordered_json::array();
+  for (const auto& v : value) out.push_back(one(v));
+  return out;
+}
+
+}  // namespace
+
+SweepPoint times(double factor) {
+  return {"", [factor](const Field& f, const ordered_json& v, const Scene&) {
+            return each_number(f, v, [factor](double d) { return d * factor; });
+          }};
+}
+SweepPoint plus(double d) {
+  return {"", [d](const Field& f, const ordered_json& v, const Scene&) {
+            return each_number(f, v, [d](double x) { return x + d; });
+          }};
+}
+SweepPoint to(ordered_json v, std::string name) {
+  return {std::move(name), [v](const Field&, const ordered_json&, const Scene&) { return v; }};
+}
+
+std::string sweep_setting(const Field& f, const SweepPoint& p, const ordered_json& changed) {
+  if (!p.name.empty()) return f.path + p.name;
+  std::string shown = changed.is_string() ? changed.get<std::string>() : "";
+  for (const auto& x : changed.is_array() ? changed : ordered_json::array({changed}))
+    if (x.is_number()) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%g", x.get<double>());
+      shown += (shown.empty() ? "" : ",") + std::string(buf);
+    }
+  return f.path + "=" + shown;
+}
+
 namespace {
 
 // A value as JSON text for an error message, whatever bytes it holds.
@@ -357,7 +403,39 @@ Field repose_deg_field() {
             else s.lattice.repose_deg = reals4(v, "lattice.repose_deg", 1, 75);
           }};
   f.kind = "per_class", f.lo = 1, f.hi = 75;
+  // ±5° around the angles the lattice uses (from friction when not set).
+  for (double d : {-5.0, 5.0})
+    f.sweep.push_back({d > 0 ? "+5" : "-5", [d](const Field&, const ordered_json&, const Scene& s) {
+                         ordered_json a = ordered_json::array();
+                         for (int k = 0; k < kClasses; ++k) a.push_back(std::clamp(repose_angle_deg(s, k) + d, 1.0, 75.0));
+                         return a;
+                       }});
   return f;
+}
+
+// The picture alone: the smaller grains drawn 1.5x their share where they
+// mix with bigger ones, or every share back at 1 when they differ.
+SweepPoint other_picture_shares() {
+  return {"", [](const Field&, const ordered_json&, const Scene& s) {
+            std::array<double, kClasses> share = s.lattice.picture_share;
+            const auto& d = s.grains.diameter_mm;
+            if (std::all_of(share.begin(), share.end(), [&](double v) { return v == share[0]; })) {
+              for (int k = 0; k < kClasses; ++k)
+                if (d[size_t(k)] < *std::max_element(d.begin(), d.end())) share[size_t(k)] *= 1.5;
+            } else {
+              share.fill(1);
+            }
+            return ordered_json(share);
+          }};
+}
+
+// Points that only a settling arrival has: what landing in falling order
+// would cost, and busy landing spots off, or on at the value the DEM's
+// outlets took at 20,000 grains.
+SweepPoint when_settling(std::function<ordered_json(const ordered_json&)> change) {
+  return {"", [change](const Field&, const ordered_json& v, const Scene& s) {
+            return s.lattice.arrival == LatticeArrival::Settling ? change(v) : ordered_json(nullptr);
+          }};
 }
 
 Field seed_field() {
@@ -616,16 +694,22 @@ std::vector<Field> make_fields() {
   });
   section(kLattice, false, {
       real("lattice.resolution", [](auto& s) -> auto& { return s.lattice.resolution; }, 0.05, 8,
-           "height-field columns per pixel"),
+           "height-field columns per pixel")
+          .swept({times(0.5), times(2)}),
       per_class("lattice.repose_gain", [](auto& s) -> auto& { return s.lattice.repose_gain; }, 0.01, 20,
                 "tan(angle of repose) = gain · physics.friction"),
       repose_deg_field(),
       per_class("lattice.runout_px", [](auto& s) -> auto& { return s.lattice.runout_px; }, 0, 1e4,
-                "how far a grain keeps going down a slope once stable, px (grain-scale: --scale keeps it)"),
+                "how far a grain keeps going down a slope once stable, px (grain-scale: --scale keeps it)")
+          .swept({to({0, 0, 0, 0}, "=0"), {"*2+2", [](const Field& f, const ordered_json& v, const Scene&) {
+                                              return each_number(f, v, [](double r) { return r * 2 + 2; });
+                                            }}}),
       real("lattice.bulk", [](auto& s) -> auto& { return s.lattice.bulk; }, 0.25, 4,
-           "area a grain takes in the pile, as a multiple of its packed area (DEM piles pack looser)"),
+           "area a grain takes in the pile, as a multiple of its packed area (DEM piles pack looser)")
+          .swept({times(0.95), times(1.05)}),
       real("lattice.surface_px", [](auto& s) -> auto& { return s.lattice.surface_px; }, 0, 100,
-           "the DEM's loose top layer: each column's top 10 px of sand drawn this much thicker, px (--scale keeps it)"),
+           "the DEM's loose top layer: each column's top 10 px of sand drawn this much thicker, px (--scale keeps it)")
+          .swept({plus(2)}),
       real("lattice.trap_rate", [](auto& s) -> auto& { return s.lattice.trap_rate; }, 0, 1,
            "chance per column slid that a rolling grain is caught on the flank (paper §8, BCRE [24]); 0: never")
           .fitted({0, 0.2, 1}),
@@ -635,16 +719,19 @@ std::vector<Field> make_fields() {
       real("lattice.spot_busy_s", [](auto& s) -> auto& { return s.lattice.spot_busy_s; }, 0, 10,
            "seconds a landing spot (a pixel column) stays busy after a grain lands on it; grains due there wait, "
            "as the DEM's insertion does (settling arrival only); 0: never")
-          .fitted({0, 0.006, 0.008, 0.010, 0.012, 0.014}),
+          .fitted({0, 0.006, 0.008, 0.010, 0.012, 0.014})
+          .swept({when_settling([](const ordered_json& v) { return ordered_json(v.get<double>() > 0 ? 0 : 0.01); })}),
       per_class("lattice.picture_share", [](auto& s) -> auto& { return s.lattice.picture_share; }, 0.05, 20,
                 "where classes mix in a column, each is drawn in proportion to area · share, as the DEM's "
-                "nearest-grain picture shows small grains among big ones larger than their area (1: by area)"),
+                "nearest-grain picture shows small grains among big ones larger than their area (1: by area)")
+          .swept({other_picture_shares()}),
       text("lattice.calibration", [](auto& s) -> auto& { return s.lattice.calibration; },
            "a file written by sandpic calibrate: its lattice values replace the scene's (lattice mode only)"),
       choice<LatticeArrival>("lattice.arrival", [](auto& s) -> auto& { return s.lattice.arrival; },
                       {{"settling", LatticeArrival::Settling}, {"release", LatticeArrival::Release}},
                       "grains land in the order they reach the pile (settling: dem.release_rate, Eq. 1, then the "
-                      "class's settling speed in dem.water, as the DEM) or in falling order (release)"),
+                      "class's settling speed in dem.water, as the DEM) or in falling order (release)")
+          .swept({when_settling([](const ordered_json&) { return ordered_json("release"); })}),
       integer("lattice.window_columns", [](auto& s) -> auto& { return s.lattice.window_columns; }, 0, 64,
               "columns the non-local slope rule looks ahead; 0: chosen per class"),
   });
@@ -653,14 +740,18 @@ std::vector<Field> make_fields() {
   section(kDem, false, {
       choice<Layers>("dem.layers", [](auto& s) -> auto& { return s.dem.layers; },
                      {{"three", Layers::Three}, {"bcre", Layers::Bcre}, {"all-dynamic", Layers::AllDynamic}},
-                     "DEM layer model (§8): three layers, two (BCRE: static grains become a height field), or none"),
+                     "DEM layer model (§8): three layers, two (BCRE: static grains become a height field), or none")
+          .swept({to("three"), to("bcre"), to("all-dynamic")}),
       real("dem.step_diameters", [](auto& s) -> auto& { return s.dem.step_diameters; }, 0.005, 1,
-           "the time step: the most a grain moves in one step, in small-grain diameters"),
+           "the time step: the most a grain moves in one step, in small-grain diameters")
+          .swept({times(2), times(0.5)}),
       integer("dem.solver_iterations", [](auto& s) -> auto& { return s.dem.solver_iterations; }, 1, 1000,
-              "Bullet constraint solver iterations per step"),
+              "Bullet constraint solver iterations per step")
+          .swept({times(0.5), times(2)}),
       real("dem.release_rate", [](auto& s) -> auto& { return s.dem.release_rate; }, 1, 1e9,
            "grains released per simulated second (§7)")
-          .read_by(kLattice | kDem),
+          .read_by(kLattice | kDem)
+          .swept({times(0.5), times(2)}),
       real("dem.rolling_resistance", [](auto& s) -> auto& { return s.dem.rolling_resistance; }, 0, 10,
            "rolling resistance μ_r: a contact's torque is at most μ_r·R_r·N, R_r = R_a·R_b/(R_a+R_b) (0: round grains spread flat)"),
       boolean("dem.water", [](auto& s) -> auto& { return s.dem.water; },
@@ -686,7 +777,8 @@ std::vector<Field> make_fields() {
       real("dem.slope_baseline_diameters", [](auto& s) -> auto& { return s.dem.slope_baseline_diameters; }, 0.5, 1000,
            "§8.1's θ is the steepest drop to the static layer this far to either side, in the largest grain's diameters"),
       real("dem.static_thickness_mm", [](auto& s) -> auto& { return s.dem.static_thickness_mm; }, 0, 1000,
-           "thickness of the static layer above the fixed one, mm (§8.1: 2)"),
+           "thickness of the static layer above the fixed one, mm (§8.1: 2)")
+          .swept({times(0.5), times(2)}),
       boolean("dem.static_bodies", [](auto& s) -> auto& { return s.dem.static_bodies; },
               "three: static grains stay bodies the flow can push, as §8.1 has them and as verify-dem passes "
               "(false: immovable spheres, 3.7x faster at --scale 0.2, outline further from all-dynamic's)"),
@@ -743,6 +835,12 @@ ordered_json keys_json() {
     k["read_by"] = readers;
     k["area"] = f.area;
     if (!f.fit_grid.empty()) k["fit_grid"] = f.fit_grid;
+    ordered_json sweep = ordered_json::array();  // validate's points, around the default scene
+    for (const SweepPoint& p : f.sweep) {
+      const ordered_json v = p.change(f, f.get(defaults), defaults);
+      if (!v.is_null() && v != f.get(defaults)) sweep.push_back(sweep_setting(f, p, v).substr(f.path.size()));
+    }
+    if (!sweep.empty()) k["sweep"] = sweep;
     out.push_back(k);
   }
   return out;

@@ -20,9 +20,28 @@ using ordered_json = nlohmann::ordered_json;
 // backend, or rendering (§10, every mode).
 enum Reader : unsigned { kPipeline = 1, kLattice = 2, kDem = 4, kRender = 8 };
 
+struct Field;
+
+// A point of validate's sweep (error against run time): the key's value
+// changed one way, from its value in the scene (null: no such point for this
+// scene; the value itself: none either).
+struct SweepPoint {
+  std::string name;  // shown after the key ("+5", "*2+2"); "": "=" and the new value
+  std::function<ordered_json(const Field& f, const ordered_json& value, const Scene& s)> change;
+};
+// The usual points: a number (or each of a class's) times f or plus d,
+// within the key's range (an integer rounded down); the value v.
+SweepPoint times(double f);
+SweepPoint plus(double d);
+SweepPoint to(ordered_json v, std::string name = "");
+// A sweep point's setting as reports name it: "lattice.bulk=0.95",
+// "lattice.picture_share=1,1,1.5,1.5", "lattice.repose_deg+5".
+std::string sweep_setting(const Field& f, const SweepPoint& p, const ordered_json& changed);
+
 // One scene key, declared once (src/scene_fields.cpp); everything else about
 // keys derives from this: the scene file, --set, --scale, areas, the digest,
-// unread keys, `scene --keys`, docs/scene-reference.md and the studio's /api/keys.
+// unread keys, `scene --keys`, validate's sweep, docs/scene-reference.md and
+// the studio's /api/keys.
 struct Field {
   std::string path;  // "segment.eccentricity_max"
   std::string help;
@@ -38,6 +57,9 @@ struct Field {
   // KEY` runs the whole fit once per value (the scene's own first) and keeps
   // the best. Empty: not fitted this way.
   std::vector<double> fit_grid;
+  // The values validate's sweep tries, one at a time (a lattice key in its
+  // lattice sweep, a DEM key in its DEM sweep). Empty: not swept.
+  std::vector<SweepPoint> sweep;
 
   Field(std::string path, std::string help, bool px, std::function<ordered_json(const Scene&)> get,
         std::function<void(Scene&, const json&)> set)
@@ -46,6 +68,7 @@ struct Field {
   Field& read_by(unsigned r) { return readers = r, *this; }
   Field& in_area() { return area = true, *this; }
   Field& fitted(std::vector<double> grid) { return fit_grid = std::move(grid), *this; }
+  Field& swept(std::vector<SweepPoint> points) { return sweep = std::move(points), *this; }
 };
 
 const std::vector<Field>& scene_fields();

@@ -102,81 +102,39 @@ std::vector<ValidationRun> more_seeds(const Job& j, const ValidateOptions& opt, 
   return runs;
 }
 
-std::string g(double v) { return num("%g", v); }
-
-// A sweep point: `base` with one setting changed by `change`.
-template <class Change>
-void add_sweep(std::vector<Job>& jobs, const char* group, const Scene& base, const std::string& setting, Change change) {
-  Job j{"sweep-" + setting, group, setting, base, ""};
-  change(j.scene);
-  jobs.push_back(j);
+// The sweep: every key of `section` ("lattice." or "dem.") that the registry
+// gives sweep points (Field::sweep), each point `base` with that one key
+// changed.
+std::vector<Job> sweep_jobs(const Scene& base, const std::string& section, const char* group) {
+  std::vector<Job> jobs;
+  for (const Field& f : scene_fields()) {
+    if (!f.path.starts_with(section)) continue;
+    const ordered_json value = f.get(base);
+    for (const SweepPoint& p : f.sweep) {
+      const ordered_json v = p.change(f, value, base);
+      if (v.is_null() || v == value) continue;
+      const std::string setting = sweep_setting(f, p, v);
+      Job j{"sweep-" + setting, group, setting, base, ""};
+      f.set(j.scene, json::parse(v.dump()));
+      jobs.push_back(j);
+    }
+  }
+  return jobs;
 }
 
 std::vector<Job> lattice_sweep(const Scene& lat) {
   // Around the values the lattice really uses (a calibration's, if named).
   Scene eff = with_calibration(lat);
   eff.lattice.calibration.clear();
-  std::array<double, kClasses> deg;
-  for (int k = 0; k < kClasses; ++k) deg[size_t(k)] = repose_angle_deg(eff, k);
-  std::vector<Job> jobs;
-  auto add = [&](const std::string& setting, auto change) { add_sweep(jobs, "sweep-lattice", eff, setting, change); };
-  for (double f : {0.5, 2.0})
-    add("lattice.resolution=" + g(eff.lattice.resolution * f), [&](Scene& s) { s.lattice.resolution *= f; });
-  for (double d : {-5.0, 5.0})
-    add("lattice.repose_deg" + std::string(d > 0 ? "+" : "") + g(d), [&](Scene& s) {
-      std::array<double, kClasses> a = deg;
-      for (double& x : a) x = std::clamp(x + d, 1.0, 75.0);
-      s.lattice.repose_deg = a;
-    });
-  add("lattice.runout_px=0", [](Scene& s) { s.lattice.runout_px.fill(0); });
-  add("lattice.runout_px*2+2", [](Scene& s) {
-    for (double& r : s.lattice.runout_px) r = r * 2 + 2;
-  });
-  for (double f : {0.95, 1.05})
-    add("lattice.bulk=" + g(eff.lattice.bulk * f), [&](Scene& s) { s.lattice.bulk *= f; });
-  add("lattice.surface_px=" + g(eff.lattice.surface_px + 2), [&](Scene& s) { s.lattice.surface_px += 2; });
-  // The picture alone: the smaller grains drawn 1.5× their share where they
-  // mix with bigger ones, or every share back at 1 when they differ.
-  std::array<double, kClasses> share = eff.lattice.picture_share;
-  const auto& d = eff.grains.diameter_mm;
-  if (std::all_of(share.begin(), share.end(), [&](double v) { return v == share[0]; })) {
-    for (int k = 0; k < kClasses; ++k)
-      if (d[size_t(k)] < *std::max_element(d.begin(), d.end())) share[size_t(k)] *= 1.5;
-  } else {
-    share.fill(1);
-  }
-  std::string shares;
-  for (double v : share) shares += (shares.empty() ? "" : ",") + g(v);
-  if (share != eff.lattice.picture_share)
-    add("lattice.picture_share=" + shares, [share](Scene& s) { s.lattice.picture_share = share; });
-  if (eff.lattice.arrival == LatticeArrival::Settling) {  // what landing in falling order would cost
-    add("lattice.arrival=release", [](Scene& s) { s.lattice.arrival = LatticeArrival::Release; });
-    // Busy landing spots off, or on at the value the DEM's outlets took at 20,000 grains.
-    const double spot = eff.lattice.spot_busy_s > 0 ? 0 : 0.01;
-    add("lattice.spot_busy_s=" + g(spot), [spot](Scene& s) { s.lattice.spot_busy_s = spot; });
-  }
-  return jobs;
+  return sweep_jobs(eff, "lattice.", "sweep-lattice");
 }
 
 std::vector<Job> dem_sweep(const Scene& dem, int64_t grains, const ValidateOptions& opt) {
-  std::vector<Job> jobs;
-  auto add = [&](const std::string& setting, auto change) { add_sweep(jobs, "sweep-dem", dem, setting, change); };
-  for (double f : {2.0, 0.5})
-    add("dem.step_diameters=" + g(dem.dem.step_diameters * f), [&](Scene& s) { s.dem.step_diameters *= f; });
-  for (int n : {std::max(1, dem.dem.solver_iterations / 2), dem.dem.solver_iterations * 2})
-    add("dem.solver_iterations=" + std::to_string(n), [&](Scene& s) { s.dem.solver_iterations = n; });
-  for (double f : {0.5, 2.0})
-    add("dem.release_rate=" + g(dem.dem.release_rate * f), [&](Scene& s) { s.dem.release_rate *= f; });
-  for (double f : {0.5, 2.0})
-    add("dem.static_thickness_mm=" + g(dem.dem.static_thickness_mm * f),
-        [&](Scene& s) { s.dem.static_thickness_mm *= f; });
-  for (Layers l : {Layers::Three, Layers::Bcre, Layers::AllDynamic}) {
-    if (l == dem.dem.layers) continue;
-    add("dem.layers=" + layers_name(l), [&](Scene& s) { s.dem.layers = l; });
-    if (l == Layers::AllDynamic && grains > opt.all_dynamic_max)
-      jobs.back().skipped = "all-dynamic skipped: " + std::to_string(grains) + " grains is above --all-dynamic-max " +
-                            std::to_string(opt.all_dynamic_max) + " (its time grows about as grains²)";
-  }
+  std::vector<Job> jobs = sweep_jobs(dem, "dem.", "sweep-dem");
+  for (Job& j : jobs)
+    if (j.scene.dem.layers == Layers::AllDynamic && dem.dem.layers != Layers::AllDynamic && grains > opt.all_dynamic_max)
+      j.skipped = "all-dynamic skipped: " + std::to_string(grains) + " grains is above --all-dynamic-max " +
+                  std::to_string(opt.all_dynamic_max) + " (its time grows about as grains²)";
   return jobs;
 }
 

@@ -157,7 +157,7 @@ namespace {
 // docs/scene-reference.md's table of every key, made from the registry (a
 // test checks the page against it): its default, whether --scale multiplies
 // it, which stages read it (pipeline: the shared one), whether an area may
-// set it, the values calibrate --fit tries, its help.
+// set it, the values calibrate --fit tries and validate sweeps, its help.
 std::string reference_table() {
   auto cell = [](std::string v) {
     std::string out;
@@ -165,14 +165,20 @@ std::string reference_table() {
     return out;
   };
   std::ostringstream o;
-  o << "| key | default | scaled | read by | area | fit grid | meaning |\n| --- | --- | --- | --- | --- | --- | --- |\n";
+  o << "| key | default | scaled | read by | area | fit grid | sweep | meaning |\n"
+       "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
   // From keys_json, the studio's list of the same keys: one naming of the readers.
+  auto joined = [](const ordered_json& names) {
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n.get<std::string>();
+    return out;
+  };
   for (const ordered_json& k : keys_json()) {
-    std::string readers;
-    for (const auto& r : k["read_by"]) readers += (readers.empty() ? "" : ", ") + r.get<std::string>();
+    const std::string readers = joined(k["read_by"]);
     o << "| `" << k["key"].get<std::string>() << "` | `" << cell(k["default"].dump()) << "` | "
       << (k["scaled"].get<bool>() ? "yes" : "") << " | " << readers << " | " << (k["area"].get<bool>() ? "yes" : "")
       << " | " << (k.contains("fit_grid") ? cell(k["fit_grid"].dump()) : "") << " | "
+      << cell(joined(k.value("sweep", ordered_json::array()))) << " | "
       << cell(k["help"].get<std::string>()) << " |\n";
   }
   return o.str();

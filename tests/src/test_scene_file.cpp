@@ -246,6 +246,31 @@ TEST(SceneFile, ScaleKeepsTheRunOut) {
   EXPECT_EQ(s.lattice.runout_px, Scene{}.lattice.runout_px);
 }
 
+// validate's sweep comes from the registry: every point a key declares is a
+// value the key accepts (numbers kept in range, integers whole), and a point
+// that does not apply to a scene says so with null.
+TEST(SceneFile, SweepPointsAreValuesTheKeyAccepts) {
+  Scene s;
+  int points = 0;
+  for (const Field& f : scene_fields())
+    for (const SweepPoint& p : f.sweep) {
+      const ordered_json v = p.change(f, f.get(s), s);
+      if (v.is_null()) continue;
+      Scene t;
+      EXPECT_NO_THROW(f.set(t, json::parse(v.dump()))) << f.path << " " << v.dump();
+      ++points;
+    }
+  EXPECT_GE(points, 20);
+  const Field& iterations = *find_field("dem.solver_iterations");
+  s.dem.solver_iterations = 1;
+  EXPECT_EQ(times(0.5).change(iterations, iterations.get(s), s), 1);  // within its range [1, 1000]
+  s.dem.solver_iterations = 7;
+  EXPECT_EQ(times(0.5).change(iterations, iterations.get(s), s), 3);
+  const Field& arrival = *find_field("lattice.arrival");
+  s.lattice.arrival = LatticeArrival::Release;  // landing order: no settling points
+  for (const SweepPoint& p : arrival.sweep) EXPECT_TRUE(p.change(arrival, arrival.get(s), s).is_null());
+}
+
 TEST(SceneFile, CalibrationFileErrorsNameTheKeyOrFile) {
   const std::filesystem::path dir = test::fresh_folder();
   Scene s;

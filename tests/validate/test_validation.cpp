@@ -64,10 +64,16 @@ TEST(Validation, RunsTheEnsembleKeepsItAndReportsEveryMetric) {
   auto swept = [&](const std::string& setting) {
     return std::any_of(v.sweep.begin(), v.sweep.end(), [&](const ValidationRun& r) { return r.setting == setting; });
   };
-  EXPECT_TRUE(swept("lattice.arrival=release"));
-  EXPECT_TRUE(swept("lattice.surface_px=2"));
-  EXPECT_TRUE(swept("lattice.spot_busy_s=0.01"));
-  EXPECT_TRUE(swept("lattice.picture_share=1,1,1.5,1.5"));
+  // The registry's sweep points (Field::sweep), around this scene's values.
+  for (const char* setting :
+       {"lattice.resolution=0.5", "lattice.resolution=2", "lattice.repose_deg-5", "lattice.repose_deg+5",
+        "lattice.runout_px=0", "lattice.runout_px*2+2", "lattice.bulk=0.95", "lattice.bulk=1.05",
+        "lattice.surface_px=2", "lattice.spot_busy_s=0.01", "lattice.picture_share=1,1,1.5,1.5",
+        "lattice.arrival=release", "dem.layers=bcre", "dem.layers=all-dynamic", "dem.step_diameters=0.1",
+        "dem.step_diameters=0.025", "dem.solver_iterations=5", "dem.solver_iterations=20", "dem.release_rate=2000",
+        "dem.release_rate=8000", "dem.static_thickness_mm=1", "dem.static_thickness_mm=4"})
+    EXPECT_TRUE(swept(setting)) << setting;
+  EXPECT_EQ(v.sweep.size(), 22u);
   EXPECT_FALSE(v.heat_map.empty());
   for (const ValidationRun& d : v.dem) EXPECT_FALSE(d.cached);
 
