@@ -309,20 +309,12 @@ Calibration calibrate(const Scene& base, const CalibrateOptions& opt, const Simu
     s.physics_seed = opt.physics_seeds[j % per];
     const std::string label = "dem-" + std::to_string(targets[j / per].prepared.init.grains.size()) + "-layout-" +
                               std::to_string(s.layout()) + "-seed-" + std::to_string(s.physics_rng());
-    std::optional<KeptRun> kept = load_kept(opt.runs_dir, label, s);
-    if (kept && !kept->class_map.empty()) {
-      maps[j] = kept->class_map;
-      seconds[j] = kept->stats["timing"]["simulate_s"].get<double>();
-    } else {
-      auto dem = make(s);
-      RunResult r = run_pipeline(s, *dem, RunOptions{});
-      if (!opt.runs_dir.empty()) keep_run(opt.runs_dir, label, r);
-      maps[j] = r.class_map;
-      seconds[j] = r.stats["timing"]["simulate_s"].get<double>();
-    }
+    const ReusedRun got = run_or_reuse(opt.runs_dir, label, s, make, /*need_class_map=*/true);
+    maps[j] = got.run.class_map;
+    seconds[j] = got.run.stats["timing"]["simulate_s"].get<double>();
     std::lock_guard lock(mu);
     log("DEM pile " + std::to_string(j + 1) + "/" + std::to_string(jobs) + ": " + label + ", " +
-        std::to_string(seconds[j]) + " s" + (kept ? " (kept from an earlier run)" : ""));
+        std::to_string(seconds[j]) + " s" + (got.kept ? " (kept from an earlier run)" : ""));
   });
   Calibration c;
   double floor_sum = 0;

@@ -1,5 +1,5 @@
 #pragma once
-// Issue 4: the lattice's rule values fitted to DEM piles, so that a preview
+// The lattice's rule values fitted to DEM piles, so that a preview
 // predicts the final render. Fitted on variants of a scene (other layouts,
 // other tessellations, another size), never on the picture that is scored.
 #include <array>
@@ -11,10 +11,9 @@
 
 #include "src/scene_file.h"
 #include "src/simulator.h"
+#include "validate/kept_runs.h"
 
 namespace sandpic {
-
-using SimulatorFactory = std::function<std::unique_ptr<Simulator>(const Scene&)>;
 
 struct CalibrateOptions {
   // Each variant at each of these sizes (grains, about): two or more sizes

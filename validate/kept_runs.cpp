@@ -41,4 +41,14 @@ void keep_run(const std::string& dir, const std::string& label, const RunResult&
   write_atomic(base + ".json", r.stats.dump(2) + "\n");
 }
 
+ReusedRun run_or_reuse(const std::string& dir, const std::string& label, const Scene& s, const SimulatorFactory& make,
+                       bool need_class_map) {
+  if (std::optional<KeptRun> kept = load_kept(dir, label, s))
+    if (!need_class_map || !kept->class_map.empty()) return {std::move(*kept), true};
+  auto sim = make(s);
+  RunResult r = run_pipeline(s, *sim, RunOptions{});
+  if (!dir.empty()) keep_run(dir, label, r);
+  return {KeptRun{r.picture, r.class_map, std::move(r.stats)}, false};
+}
+
 }  // namespace sandpic

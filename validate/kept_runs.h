@@ -3,6 +3,8 @@
 // holds: validate and calibrate score a new lattice in seconds against hours
 // of DEM. A run is DIR/<label>.png (the picture), <label>.classes.png (its
 // class map, 8-bit grey) and <label>.json (its stats).
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -24,5 +26,18 @@ std::optional<KeptRun> load_kept(const std::string& dir, const std::string& labe
 
 // Writes the run's three files (each atomically); dir must exist.
 void keep_run(const std::string& dir, const std::string& label, const RunResult& r);
+
+using SimulatorFactory = std::function<std::unique_ptr<Simulator>(const Scene&)>;
+
+// The one way validate and calibrate get a DEM run: the run kept as `label`
+// in `dir` while it holds (with a class map, if `need_class_map`), else the
+// scene through the pipeline (run_pipeline: its checks, every grain
+// accounted for) with a simulator from `make`, kept in `dir` ("": not kept).
+struct ReusedRun {
+  KeptRun run;
+  bool kept = false;  // it came from the folder
+};
+ReusedRun run_or_reuse(const std::string& dir, const std::string& label, const Scene& s, const SimulatorFactory& make,
+                       bool need_class_map = false);
 
 }  // namespace sandpic

@@ -51,15 +51,9 @@ void take(ValidationRun& r, const cv::Mat& picture, const ordered_json& stats) {
 ValidationRun run_job(const Job& j, const ValidateOptions& opt, const SimulatorFactory& make) {
   ValidationRun r = describe(j);
   if (!r.skipped.empty()) return r;
-  if (std::optional<KeptRun> kept = load_kept(opt.cache_dir, j.label, j.scene)) {
-    take(r, kept->picture, kept->stats);
-    r.cached = true;
-    return r;
-  }
-  auto sim = make(j.scene);
-  RunResult out = run_pipeline(j.scene, *sim, RunOptions{});
-  take(r, out.picture, out.stats);
-  if (!opt.cache_dir.empty()) keep_run(opt.cache_dir, j.label, out);
+  const ReusedRun got = run_or_reuse(opt.cache_dir, j.label, j.scene, make);
+  take(r, got.run.picture, got.run.stats);
+  r.cached = got.kept;
   return r;
 }
 

@@ -48,5 +48,30 @@ TEST(KeptRuns, AnotherSceneOrABrokenFileIsNotReused) {
   std::filesystem::remove_all(dir);
 }
 
+// validate's and calibrate's one way to a run: kept if it holds, else run and kept.
+TEST(KeptRuns, RunOrReuseRunsOnceAndThenReuses) {
+  const std::string dir = test::fresh_folder();
+  const Scene s = small();
+  int made = 0;
+  const SimulatorFactory make = [&](const Scene&) {
+    ++made;
+    return make_lattice_simulator();
+  };
+  const ReusedRun first = run_or_reuse(dir, "a", s, make);
+  EXPECT_FALSE(first.kept);
+  const ReusedRun again = run_or_reuse(dir, "a", s, make);
+  EXPECT_TRUE(again.kept);
+  EXPECT_EQ(made, 1);
+  EXPECT_EQ(cv::norm(again.run.picture, first.run.picture, cv::NORM_INF), 0);
+  EXPECT_EQ(cv::norm(again.run.class_map, first.run.class_map, cv::NORM_INF), 0);
+  // Kept without a class map: reused for its picture, run again when the map is needed.
+  std::filesystem::remove(dir + "/a.classes.png");
+  EXPECT_TRUE(run_or_reuse(dir, "a", s, make).kept);
+  EXPECT_FALSE(run_or_reuse(dir, "a", s, make, /*need_class_map=*/true).kept);
+  EXPECT_EQ(made, 2);
+  EXPECT_FALSE(run_or_reuse("", "a", s, make).kept);  // no folder: run, nothing kept
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace sandpic
