@@ -3,7 +3,7 @@
 // started and where it came to rest. Both backends start a grain's fall at
 // the same point for one scene and physics seed (paper §7, src/release.h),
 // so two tables of one scene and seed compare grain by grain
-// (validate/grain_compare.h): how far each grain travelled once it reached
+// (validate/metrics/grain_compare.h): how far each grain travelled once it reached
 // the pile, and where the two backends part.
 #include <cstdint>
 #include <string>

@@ -9,7 +9,7 @@
 #include "src/render.h"
 #include "src/scene.h"
 #include "src/simulator.h"
-#include "validate/silhouette.h"
+#include "validate/metrics/silhouette.h"
 
 namespace sandpic::test {
 

@@ -25,11 +25,11 @@
 #include "src/presets.h"
 #include "src/scene_file.h"
 #include "src/segment/sketch.h"
-#include "validate/compare.h"
-#include "validate/grain_compare.h"
-#include "validate/friction_bench.h"
-#include "validate/layer_bench.h"
-#include "validate/statistics.h"
+#include "validate/metrics/compare.h"
+#include "validate/metrics/grain_compare.h"
+#include "validate/bench/friction_bench.h"
+#include "validate/bench/layer_bench.h"
+#include "validate/metrics/statistics.h"
 
 namespace sandpic {
 

@@ -8,7 +8,7 @@
 #include "src/output.h"
 #include "src/progress.h"
 #include "src/simulator.h"
-#include "validate/stress.h"
+#include "validate/stress/stress.h"
 
 namespace sandpic {
 namespace {

@@ -8,9 +8,9 @@
 #include "src/errors.h"
 #include "src/output.h"
 #include "src/progress.h"
-#include "validate/calibrate.h"
-#include "validate/report_html.h"
-#include "validate/validation.h"
+#include "validate/runs/calibrate.h"
+#include "validate/report/report_html.h"
+#include "validate/runs/validation.h"
 
 namespace sandpic {
 namespace {

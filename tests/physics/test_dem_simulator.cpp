@@ -10,8 +10,8 @@
 #include "src/pipeline.h"
 #include "src/render.h"
 #include "src/scene_file.h"
-#include "validate/friction_bench.h"
-#include "validate/silhouette.h"
+#include "validate/bench/friction_bench.h"
+#include "validate/metrics/silhouette.h"
 #include "tests/test_util.h"
 
 namespace sandpic {

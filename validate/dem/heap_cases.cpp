@@ -13,9 +13,9 @@
 #include "physics/dem_simulator.h"
 #include "src/pipeline.h"
 #include "validate/dem/cases.h"
-#include "validate/friction_bench.h"
-#include "validate/silhouette.h"
-#include "validate/statistics.h"
+#include "validate/bench/friction_bench.h"
+#include "validate/metrics/silhouette.h"
+#include "validate/metrics/statistics.h"
 
 namespace sandpic::verify {
 namespace {

@@ -7,7 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "validate/dem/verify_dem.h"
-#include "validate/report_html.h"
+#include "validate/report/report_html.h"
 
 namespace sandpic {
 namespace {

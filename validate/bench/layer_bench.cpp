@@ -1,4 +1,4 @@
-#include "validate/layer_bench.h"
+#include "validate/bench/layer_bench.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 
 #include "src/errors.h"
 #include "src/pipeline.h"
-#include "validate/silhouette.h"
-#include "validate/statistics.h"
+#include "validate/metrics/silhouette.h"
+#include "validate/metrics/statistics.h"
 
 namespace sandpic {
 namespace {

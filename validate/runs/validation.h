@@ -13,8 +13,8 @@
 #include <opencv2/core.hpp>
 
 #include "src/scene_file.h"
-#include "validate/calibrate.h"
-#include "validate/compare.h"
+#include "validate/runs/calibrate.h"
+#include "validate/metrics/compare.h"
 
 namespace sandpic {
 

@@ -1,4 +1,4 @@
-#include "validate/calibrate.h"
+#include "validate/runs/calibrate.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,10 +14,10 @@
 #include "src/errors.h"
 #include "src/init/init.h"
 #include "src/pipeline.h"
-#include "validate/compare.h"
-#include "validate/kept_runs.h"
-#include "validate/silhouette.h"
-#include "validate/statistics.h"
+#include "validate/metrics/compare.h"
+#include "validate/runs/kept_runs.h"
+#include "validate/metrics/silhouette.h"
+#include "validate/metrics/statistics.h"
 
 namespace sandpic {
 namespace {

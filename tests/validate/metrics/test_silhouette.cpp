@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "src/simulator.h"
-#include "validate/silhouette.h"
+#include "validate/metrics/silhouette.h"
 
 namespace sandpic {
 namespace {

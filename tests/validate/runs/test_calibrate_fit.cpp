@@ -7,7 +7,7 @@
 
 #include "lattice/lattice_simulator.h"
 #include "tests/test_folder.h"
-#include "validate/calibrate.h"
+#include "validate/runs/calibrate.h"
 
 namespace sandpic {
 namespace {

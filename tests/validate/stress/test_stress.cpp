@@ -7,7 +7,7 @@
 
 #include "src/output.h"
 #include "tests/test_folder.h"
-#include "validate/stress.h"
+#include "validate/stress/stress.h"
 
 namespace sandpic {
 namespace {

@@ -1,4 +1,4 @@
-#include "validate/report_html.h"
+#include "validate/report/report_html.h"
 
 #include <algorithm>
 #include <cmath>

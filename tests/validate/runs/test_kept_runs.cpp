@@ -5,7 +5,7 @@
 
 #include "lattice/lattice_simulator.h"
 #include "tests/test_folder.h"
-#include "validate/kept_runs.h"
+#include "validate/runs/kept_runs.h"
 
 namespace sandpic {
 namespace {

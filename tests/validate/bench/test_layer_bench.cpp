@@ -4,7 +4,7 @@
 
 #include "physics/dem_simulator.h"
 #include "tests/test_util.h"
-#include "validate/layer_bench.h"
+#include "validate/bench/layer_bench.h"
 
 namespace sandpic {
 namespace {

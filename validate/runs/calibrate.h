@@ -11,7 +11,7 @@
 
 #include "src/scene_file.h"
 #include "src/simulator.h"
-#include "validate/kept_runs.h"
+#include "validate/runs/kept_runs.h"
 
 namespace sandpic {
 

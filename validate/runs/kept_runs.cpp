@@ -1,4 +1,4 @@
-#include "validate/kept_runs.h"
+#include "validate/runs/kept_runs.h"
 
 #include <opencv2/imgcodecs.hpp>
 

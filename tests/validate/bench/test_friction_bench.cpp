@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "physics/dem_simulator.h"
-#include "validate/friction_bench.h"
+#include "validate/bench/friction_bench.h"
 
 namespace sandpic {
 namespace {

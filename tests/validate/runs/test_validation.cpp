@@ -6,8 +6,8 @@
 #include "lattice/lattice_simulator.h"
 #include "src/errors.h"
 #include "tests/test_folder.h"
-#include "validate/report_html.h"
-#include "validate/validation.h"
+#include "validate/report/report_html.h"
+#include "validate/runs/validation.h"
 
 namespace sandpic {
 namespace {

@@ -26,7 +26,7 @@ struct FrictionBenchRow {
   double friction = 0;
   uint64_t seed = 0;
   int64_t grains = 0;
-  double angle_deg = NAN;  // heap angle (validate/silhouette.h)
+  double angle_deg = NAN;  // heap angle (validate/metrics/silhouette.h)
   double slope_deg = NAN;  // scene slope, smoothed over 8 large-grain diameters
   double simulate_s = NAN;
   double silhouette_error = NAN;  // against all-dynamic, same friction and seed; NaN: none ran

@@ -1,4 +1,4 @@
-#include "validate/statistics.h"
+#include "validate/metrics/statistics.h"
 
 #include <algorithm>
 #include <cmath>

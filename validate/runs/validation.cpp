@@ -1,4 +1,4 @@
-#include "validate/validation.h"
+#include "validate/runs/validation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,9 +12,9 @@
 #include "src/errors.h"
 #include "src/output.h"
 #include "src/pipeline.h"
-#include "validate/kept_runs.h"
-#include "validate/silhouette.h"
-#include "validate/statistics.h"
+#include "validate/runs/kept_runs.h"
+#include "validate/metrics/silhouette.h"
+#include "validate/metrics/statistics.h"
 
 namespace sandpic {
 namespace {

@@ -1,4 +1,4 @@
-#include "validate/grain_compare.h"
+#include "validate/metrics/grain_compare.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "validate/compare.h"
+#include "validate/metrics/compare.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "src/render.h"
 #include "src/simulator.h"
-#include "validate/silhouette.h"
+#include "validate/metrics/silhouette.h"
 
 namespace sandpic {
 

@@ -9,7 +9,7 @@
 #include "src/errors.h"
 #include "src/init/init.h"
 #include "tests/test_folder.h"
-#include "validate/calibrate.h"
+#include "validate/runs/calibrate.h"
 
 namespace sandpic {
 namespace {

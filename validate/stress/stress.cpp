@@ -2,7 +2,7 @@
 // it names) written into its own folder and rendered by a child sandpic, so
 // the exit code, the one-line error and the files left behind are exactly
 // what a user would get.
-#include "validate/stress.h"
+#include "validate/stress/stress.h"
 
 #include <fcntl.h>
 #include <signal.h>

@@ -1,4 +1,4 @@
-#include "validate/friction_bench.h"
+#include "validate/bench/friction_bench.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <map>
 
 #include "src/pipeline.h"
-#include "validate/silhouette.h"
-#include "validate/statistics.h"
+#include "validate/metrics/silhouette.h"
+#include "validate/metrics/statistics.h"
 
 namespace sandpic {
 

@@ -1,4 +1,4 @@
-#include "validate/silhouette.h"
+#include "validate/metrics/silhouette.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 
 #include "src/render.h"
 #include "src/simulator.h"
-#include "validate/compare.h"
+#include "validate/metrics/compare.h"
 
 namespace sandpic {
 namespace {

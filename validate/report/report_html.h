@@ -6,7 +6,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "validate/validation.h"
+#include "validate/runs/validation.h"
 
 namespace sandpic {
 
