@@ -474,9 +474,11 @@ void DemRun::freeze_stage() {
 // the pile, at least 80 steps from touching it, and a cycle is 40). Sleeping
 // with nothing dynamic cut the stress catalogue's density-100:1 scene, whose
 // light grains sink for seconds while the pile waits, from 19x the immovable
-// statics' time. The reach is a speed lever, not the default: every static
+// statics' time. The reach was a speed lever, not the default: every static
 // body solved at every step cost 4.4x the immovable statics' time on the
-// default scene at --scale 0.2, a reach of 4 largest diameters 1.9x; but a
+// default scene at --scale 0.2, a reach of 4 largest diameters 1.9x (with the
+// rows in order of height, 4.5x and 4.8x: the reach no longer saves
+// body-steps there, docs/notebook/2026-12-04-layer-models-default-scene.md); but a
 // sphere cannot yield to the slow settling all-dynamic piles go through:
 // verify-dem's quick heap then differed from all-dynamic by 1.5-2.0 deg (mean
 // of 2 seeds; one seed 3.3, 2 diameters up to 6;
