@@ -43,8 +43,9 @@ struct VerifyCommand {
     opt.quick = quick;
     opt.threads = threads;
     if (!only.empty()) opt.only = list_option<std::string>("--only", only, [](const std::string& i) { return i; });
-    opt.sets = sets;  // run_verify_dem checks these and the case ids before any run
+    opt.sets = sets;
     opt.layer_models = layers_list(layers);
+    check_verify_options(opt);  // before the folder is made
     check_folder(out);
     const bool tty = Progress::stderr_is_terminal();
     opt.log = [tty](const std::string& line) {

@@ -98,12 +98,16 @@ void check_pile_settings(const std::vector<std::string>& sets) {
 
 }  // namespace
 
-VerifyReport run_verify_dem(const VerifyOptions& opt) {
+void check_verify_options(const VerifyOptions& opt) {
   check_case_ids(opt.only);
+  check_pile_settings(opt.sets);
+}
+
+VerifyReport run_verify_dem(const VerifyOptions& opt) {
+  check_verify_options(opt);
   std::unique_ptr<tbb::global_control> threads;
   if (opt.threads > 0)
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, size_t(opt.threads));
-  check_pile_settings(opt.sets);
   VerifyReport report;
   report.quick = opt.quick;
   report.sets = opt.sets;

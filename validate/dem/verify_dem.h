@@ -74,10 +74,12 @@ struct VerifyReport {
 // rolling, notch, heap, creep, layers, step.
 const std::vector<std::string>& verify_case_ids();
 
-// Throws InputError (exit 2), before any run, for an id of opt.only that is
-// not a case and for a setting of opt.sets that is not a scene key's or is one
-// the pile cases vary themselves (dem.layers, physics.friction,
-// dem.rolling_resistance, the seeds, the mode).
+// Throws InputError (exit 2) for an id of opt.only that is not a case and
+// for a setting of opt.sets that is not a scene key's or is one the pile
+// cases vary themselves (dem.layers, physics.friction, dem.rolling_resistance,
+// the seeds, the mode). run_verify_dem checks first; the CLI too, before it
+// makes the report's folder.
+void check_verify_options(const VerifyOptions& opt);
 VerifyReport run_verify_dem(const VerifyOptions& opt);
 
 ordered_json verify_json(const VerifyReport& r);
