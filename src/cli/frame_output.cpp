@@ -62,8 +62,7 @@ FrameOutput::FrameOutput(const std::string& dir, const std::string& video, cv::S
   }
   if (!video_.empty()) {
     tmp_video_ = temp_file_beside(video_);
-    writer_.open(tmp_video_, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), fps, size);
-    if (!writer_.isOpened()) {
+    if (!writer_.open(tmp_video_, "mp4v", fps, size)) {
       std::error_code ec;
       fs::remove(tmp_video_, ec);  // the destructor does not run after a throw
       throw InputError("--video: cannot write '" + video_ + "': OpenCV cannot encode mp4v video into a '" +
@@ -88,7 +87,7 @@ void FrameOutput::write(const cv::Mat& picture) {
     if (!cv::imencode(".png", picture, png)) throw SimulationError("PNG encoding failed for a frame");
     write_atomic(tmp_dir_ + "/" + frame_name(written_), std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
   }
-  if (writer_.isOpened()) writer_.write(picture);
+  writer_.write(picture);
   ++written_;
 }
 

@@ -6,7 +6,8 @@
 #include <string>
 
 #include <opencv2/core.hpp>
-#include <opencv2/videoio.hpp>
+
+#include "src/video.h"
 
 namespace sandpic {
 
@@ -25,7 +26,7 @@ class FrameOutput {
 
  private:
   std::string dir_, video_, tmp_dir_, tmp_video_;
-  cv::VideoWriter writer_;
+  VideoWriter writer_;
   int written_ = 0;
 };
 

@@ -5,10 +5,10 @@
 #include <random>
 
 #include <opencv2/imgcodecs.hpp>
-#include <opencv2/videoio.hpp>
 
 #include "src/output.h"
 #include "src/pipeline.h"
+#include "src/video.h"
 
 namespace sandpic::studio {
 
@@ -32,10 +32,10 @@ double number_param(const std::string& name, const std::string& text, double lo,
 std::string encode_video(const std::vector<cv::Mat>& frames, double fps) {
   const fs::path tmp = fs::temp_directory_path() / ("sandpic-studio-" + std::to_string(std::random_device{}()) + ".mp4");
   std::string bytes;
-  for (const int fourcc : {cv::VideoWriter::fourcc('a', 'v', 'c', '1'), cv::VideoWriter::fourcc('m', 'p', '4', 'v')}) {
+  for (const char* fourcc : {"avc1", "mp4v"}) {
     {
-      cv::VideoWriter w(tmp.string(), fourcc, fps, frames.front().size());
-      if (!w.isOpened()) continue;
+      VideoWriter w;
+      if (!w.open(tmp.string(), fourcc, fps, frames.front().size())) continue;
       for (const cv::Mat& f : frames) w.write(f);
     }
     if (auto b = read_text(tmp.string()); b && !b->empty()) {
