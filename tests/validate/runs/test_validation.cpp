@@ -73,7 +73,6 @@ TEST(Validation, RunsTheEnsembleKeepsItAndReportsEveryMetric) {
         "dem.step_diameters=0.025", "dem.solver_iterations=5", "dem.solver_iterations=20", "dem.release_rate=2000",
         "dem.release_rate=8000", "dem.static_thickness_mm=1", "dem.static_thickness_mm=4"})
     EXPECT_TRUE(swept(setting)) << setting;
-  EXPECT_EQ(v.sweep.size(), 22u);
   EXPECT_FALSE(v.heat_map.empty());
   for (const ValidationRun& d : v.dem) EXPECT_FALSE(d.cached);
 
