@@ -3,7 +3,8 @@
 #include <dlfcn.h>
 
 #include <filesystem>
-#include <stdexcept>
+
+#include "src/errors.h"
 
 namespace sandpic {
 
@@ -23,8 +24,9 @@ const Plugin& plugin() {
     std::string tried, why;
     std::error_code ec;
     const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    for (const std::string& path : {ec ? std::string() : (exe.parent_path() / name).string(), std::string(SANDPIC_VIDEO_PLUGIN)}) {
-      if (path.empty()) continue;
+    const std::string beside = ec ? std::string() : (exe.parent_path() / name).string();
+    for (const std::string& path : {beside, std::string(SANDPIC_VIDEO_PLUGIN)}) {
+      if (path.empty() || tried.find(path) != std::string::npos) continue;
       if (void* h = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL)) {
         Plugin q;
         q.open = reinterpret_cast<decltype(q.open)>(dlsym(h, "sandpic_video_open"));
@@ -37,7 +39,7 @@ const Plugin& plugin() {
       }
       tried += (tried.empty() ? "" : ", ") + path;
     }
-    throw std::runtime_error("cannot load the video encoder " + name + " (tried " + tried + "): " + why);
+    throw InputError("cannot load the video encoder " + name + " (tried " + tried + "): " + why);
   }();
   return p;
 }

@@ -19,8 +19,8 @@ class VideoWriter {
   VideoWriter& operator=(const VideoWriter&) = delete;
 
   // Opens `path` for the codec `fourcc` ("mp4v", "avc1"); false when OpenCV
-  // cannot encode it here. Throws std::runtime_error when the plugin cannot
-  // be loaded.
+  // cannot encode it here. Throws InputError (exit 2) naming the plugin's
+  // file when it cannot be loaded.
   bool open(const std::string& path, const char fourcc[4], double fps, cv::Size size);
   bool is_open() const { return handle_ != nullptr; }
   void write(const cv::Mat& bgr);  // 8-bit BGR, the size opened

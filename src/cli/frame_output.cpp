@@ -62,9 +62,17 @@ FrameOutput::FrameOutput(const std::string& dir, const std::string& video, cv::S
   }
   if (!video_.empty()) {
     tmp_video_ = temp_file_beside(video_);
-    if (!writer_.open(tmp_video_, "mp4v", fps, size)) {
+    bool opened = false;
+    try {
+      opened = writer_.open(tmp_video_, "mp4v", fps, size);
+    } catch (const InputError& e) {
       std::error_code ec;
       fs::remove(tmp_video_, ec);  // the destructor does not run after a throw
+      throw InputError(std::string("--video: ") + e.what());
+    }
+    if (!opened) {
+      std::error_code ec;
+      fs::remove(tmp_video_, ec);
       throw InputError("--video: cannot write '" + video_ + "': OpenCV cannot encode mp4v video into a '" +
                        fs::path(video_).extension().string() + "' file here (use .mp4; needs OpenCV's ffmpeg backend)");
     }
