@@ -1,7 +1,39 @@
 #include "physics/grain_solver.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+
+namespace {
+
+// (key, index) pairs, entered in index order, sorted as std::sort sorts them
+// (by key, equal keys by index), in linear time: a least-significant-digit
+// radix sort of the keys' bits is stable. The height sort took about 4% of a
+// DEM run with std::sort. Keys are finite and never -0 (the caller adds +0).
+void sort_pairs(std::vector<std::pair<float, int>>& v, std::vector<std::pair<float, int>>& spare) {
+  if (v.size() < 256) {
+    std::sort(v.begin(), v.end());
+    return;
+  }
+  const auto bits = [](float f) {  // monotone in f: negatives flipped whole, positives above them
+    uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    return u ^ ((u >> 31) ? 0xFFFFFFFFu : 0x80000000u);
+  };
+  spare.resize(v.size());
+  for (int shift = 0; shift < 32; shift += 8) {
+    size_t start[257] = {};
+    for (const auto& p : v) ++start[((bits(p.first) >> shift) & 255u) + 1];
+    for (int b = 0; b < 256; ++b) start[b + 1] += start[b];
+    for (const auto& p : v) spare[start[(bits(p.first) >> shift) & 255u]++] = p;
+    v.swap(spare);
+  }
+}
+
+}  // namespace
 
 void GrainSolver::configure(btContactSolverInfo& info, int iterations) {
   info.m_numIterations = iterations;
@@ -19,9 +51,10 @@ void GrainSolver::convertContacts(btPersistentManifold** manifolds, int count, c
   for (int i = 0; i < count; ++i) {
     const btPersistentManifold* m = manifolds[i];
     const btScalar y = m->getNumContacts() > 0 ? m->getContactPoint(0).getPositionWorldOnB().y() : btScalar(0);
-    order_.emplace_back(-y, i);
+    order_.emplace_back(-y + btScalar(0), i);  // + 0: a -0 key would sort apart from +0
   }
-  std::sort(order_.begin(), order_.end());  // ties by index: the same order at any thread count
+  static_assert(std::is_same_v<btScalar, float>, "Debian's Bullet is single precision");
+  sort_pairs(order_, spare_);  // ties by index: the same order at any thread count
   for (const auto& [key, i] : order_) convert(manifolds[i], info);
 }
 

@@ -80,5 +80,5 @@ class GrainSolver : public btSequentialImpulseConstraintSolver {
     btManifoldPoint* point = nullptr;
   };
   std::vector<Bounce> bounces_;
-  std::vector<std::pair<btScalar, int>> order_;  // (−height, manifold) of this step's contacts
+  std::vector<std::pair<btScalar, int>> order_, spare_;  // (−height, manifold) of this step's contacts
 };
