@@ -48,8 +48,6 @@ cv::Mat shown_classes(const Scene& s, const cv::Mat& class_map, int* mirror_row 
   return mirrored;
 }
 
-std::string mode_name(Mode m) { return m == Mode::Lattice ? "lattice" : "dem"; }
-
 }  // namespace
 
 Prepared prepare(const Scene& s, ordered_json* timing) {

@@ -26,4 +26,6 @@ double grain_area_px(const Scene& s, int k) {
   return std::numbers::pi / 4 * d * d / s.units.packing;
 }
 
+std::string mode_name(Mode m) { return m == Mode::Lattice ? "lattice" : m == Mode::Dem ? "dem" : "lammps"; }
+
 }  // namespace sandpic

@@ -19,7 +19,8 @@ struct Rgb {
 enum class InitMethod { Tessellation, Halftone };
 enum class TessellationKind { Uniform, Varying, Strips };
 enum class SegmentMethod { Ellipses, Explicit, Cells, Sketch, Pattern };
-enum class Mode { Lattice, Dem };
+enum class Mode { Lattice, Dem, Lammps };  // lammps: the reference DEM (physics/lammps_simulator.h)
+std::string mode_name(Mode m);  // the scene key's word for it
 enum class Layers { Three, Bcre, AllDynamic };  // paper §8: layer models of the DEM mode
 // Lattice: grains land in the order they reach the pile (settling) or in falling order (release).
 enum class LatticeArrival { Settling, Release };

@@ -678,19 +678,20 @@ std::vector<Field> make_fields() {
       real("release.gravity_m_s2", [](auto& s) -> auto& { return s.release.gravity_m_s2; }, 0.01, 1000,
            "gravity in Eq. 1-2, m/s²"),
       choice<Mode>("mode", [](auto& s) -> auto& { return s.mode; },
-                   {{"lattice", Mode::Lattice}, {"dem", Mode::Dem}}, "simulation backend"),
+                   {{"lattice", Mode::Lattice}, {"dem", Mode::Dem}, {"lammps", Mode::Lammps}},
+                   "simulation backend (lammps: LAMMPS's granular DEM run by `lmp`, the reference for dem)"),
       seed_field(),
       optional_seed("layout_seed", [](auto& s) -> auto& { return s.layout_seed; },
                     "tessellation, colours, ellipses, falling-order ties; null: seed"),
       optional_seed("physics_seed", [](auto& s) -> auto& { return s.physics_seed; },
                     "the simulation's own randomness; null: seed"),
   });
-  section(kLattice | kDem, false, {  // the lattice's angle of repose follows the friction
+  section(kLattice | kDem | kLammps, false, {  // the lattice's angle of repose follows the friction
       real("physics.friction", [](auto& s) -> auto& { return s.physics.friction; }, 0, 10,
            "Coulomb friction, static = dynamic (§7: 0.4)"),
       real("physics.restitution", [](auto& s) -> auto& { return s.physics.restitution; }, 0, 1,
            "restitution (§7: 0.1)")
-          .read_by(kDem),
+          .read_by(kDem | kLammps),
   });
   section(kLattice, false, {
       real("lattice.resolution", [](auto& s) -> auto& { return s.lattice.resolution; }, 0.05, 8,
@@ -750,19 +751,20 @@ std::vector<Field> make_fields() {
           .swept({times(0.5), times(2)}),
       real("dem.release_rate", [](auto& s) -> auto& { return s.dem.release_rate; }, 1, 1e9,
            "grains released per simulated second (§7)")
-          .read_by(kLattice | kDem)
+          .read_by(kLattice | kDem | kLammps)
           .swept({times(0.5), times(2)}),
       real("dem.rolling_resistance", [](auto& s) -> auto& { return s.dem.rolling_resistance; }, 0, 10,
-           "rolling resistance μ_r: a contact's torque is at most μ_r·R_r·N, R_r = R_a·R_b/(R_a+R_b) (0: round grains spread flat)"),
+           "rolling resistance μ_r: a contact's torque is at most μ_r·R_r·N, R_r = R_a·R_b/(R_a+R_b) (0: round grains spread flat)")
+          .read_by(kDem | kLammps),
       boolean("dem.water", [](auto& s) -> auto& { return s.dem.water; },
               "the device's water: drag and buoyancy per class density")
-          .read_by(kLattice | kDem),
+          .read_by(kLattice | kDem | kLammps),
       real("dem.water_density_g_cm3", [](auto& s) -> auto& { return s.dem.water_density_g_cm3; }, 0, 50,
            "water density, g/cm³")
-          .read_by(kLattice | kDem),
+          .read_by(kLattice | kDem | kLammps),
       real("dem.water_viscosity_pa_s", [](auto& s) -> auto& { return s.dem.water_viscosity_pa_s; }, 1e-6, 100,
            "water viscosity, Pa·s")
-          .read_by(kLattice | kDem),
+          .read_by(kLattice | kDem | kLammps),
       integer("dem.cycle_steps", [](auto& s) -> auto& { return s.dem.cycle_steps; }, 1, 100000,
               "steps per simulation cycle: the layers are updated once a cycle (§8.1: 40)"),
       real("dem.rest_displacement", [](auto& s) -> auto& { return s.dem.rest_displacement; }, 0, 10,
@@ -830,7 +832,7 @@ ordered_json keys_json() {
     if (!f.choices.empty()) k["choices"] = f.choices;
     k["scaled"] = f.px;
     ordered_json readers = ordered_json::array();
-    for (auto [bit, name] : {std::pair{kPipeline, "pipeline"}, {kLattice, "lattice"}, {kDem, "dem"}, {kRender, "render"}})
+    for (auto [bit, name] : {std::pair{kPipeline, "pipeline"}, {kLattice, "lattice"}, {kDem, "dem"}, {kLammps, "lammps"}, {kRender, "render"}})
       if (f.readers & bit) readers.push_back(name);
     k["read_by"] = readers;
     k["area"] = f.area;

@@ -347,7 +347,8 @@ std::string scene_digest(const Scene& s) {
 }
 
 bool read_in_mode(const Field& f, Mode m) {
-  return (f.readers & (kPipeline | kRender | (m == Mode::Dem ? kDem : kLattice))) != 0;
+  const unsigned mode = m == Mode::Dem ? kDem : m == Mode::Lammps ? kLammps : kLattice;
+  return (f.readers & (kPipeline | kRender | mode)) != 0;
 }
 
 bool read_in_mode(const std::string& path, Mode m) {

@@ -18,7 +18,7 @@ using ordered_json = nlohmann::ordered_json;
 
 // Which stages read a key: the shared pipeline (paper §4-7, every mode), one
 // backend, or rendering (§10, every mode).
-enum Reader : unsigned { kPipeline = 1, kLattice = 2, kDem = 4, kRender = 8 };
+enum Reader : unsigned { kPipeline = 1, kLattice = 2, kDem = 4, kRender = 8, kLammps = 16 };
 
 struct Field;
 

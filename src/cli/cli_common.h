@@ -29,7 +29,7 @@ struct SceneOptions {
 
   void add_to(CLI::App* cmd) {
     cmd->add_option("scene", scene_path, "scene file (JSON); none: the built-in default scene");
-    cmd->add_option("--mode", mode, "lattice | dem (the scene's key 'mode')");
+    cmd->add_option("--mode", mode, "lattice | dem | lammps (the scene's key 'mode')");
     // The range of the scene file's seeds, so a reported seed can go in one.
     const auto seeds = CLI::Range(int64_t(0), int64_t(9007199254740991));
     cmd->add_option("--seed", seed, "sets the layout and the physics seed")->check(seeds);
@@ -118,5 +118,7 @@ std::shared_ptr<void> add_stress_command(CLI::App& app);
 std::shared_ptr<void> add_studio_command(CLI::App& app);
 // sandpic verify-dem (src/cli/verify_command.cpp).
 std::shared_ptr<void> add_verify_command(CLI::App& app);
+// sandpic export-lammps (src/cli/lammps_command.cpp).
+std::shared_ptr<void> add_lammps_command(CLI::App& app);
 
 }  // namespace sandpic

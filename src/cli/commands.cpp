@@ -15,7 +15,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <tbb/global_control.h>
 
+#include "src/cli/backends.h"
 #include "src/cli/cli_common.h"
+#include "src/cli/lammps_options.h"
 #include "src/cli/frame_output.h"
 #include "src/errors.h"
 #include "src/grain_table.h"
@@ -29,6 +31,7 @@
 #include "validate/metrics/grain_compare.h"
 #include "validate/bench/friction_bench.h"
 #include "validate/bench/layer_bench.h"
+#include "validate/metrics/silhouette.h"
 #include "validate/metrics/statistics.h"
 
 namespace sandpic {
@@ -48,6 +51,7 @@ namespace {
 
 struct RenderCommand {
   SceneOptions scene;
+  LammpsCliOptions lammps;
   std::string out, stats, stages, frames, video, grains;
   int frame_count = 60;
   double fps = 24, max_memory_gb = 0, max_hours = 24;
@@ -73,11 +77,16 @@ struct RenderCommand {
     cmd->add_option("--max-hours", max_hours, "refuse a scene estimated to take longer to simulate")
         ->check(CLI::Range(0.0, 1e6))
         ->capture_default_str();
+    lammps.add_to(cmd);
     cmd->callback([this] { run(); });
   }
 
   void run() {
     Scene s = scene.build();
+    if (s.mode == Mode::Lammps && (!frames.empty() || !video.empty()))
+      throw InputError("--frames and --video are not available in mode lammps (its grains are read back once, at the end)");
+    if (s.mode != Mode::Lammps && !lammps.opt.from_dump.empty())
+      throw InputError("--from-dump needs mode lammps (--mode lammps, or the scene's key 'mode')");
     for (std::string* dir : {&stages, &frames})
       while (dir->size() > 1 && dir->back() == '/') dir->pop_back();
     check_writable(out);
@@ -85,7 +94,7 @@ struct RenderCommand {
     if (!grains.empty()) check_writable(grains);
     if (!stages.empty() && !std::filesystem::is_directory(stages)) check_writable(stages);
     auto threads = limit_threads(scene.threads);
-    auto sim = make_simulator(s);
+    auto sim = make_simulator(s, lammps.opt);
     RunOptions opt;
     opt.stages = !stages.empty();
     opt.grains = !grains.empty();
@@ -144,9 +153,8 @@ struct SketchCommand {
 void SceneOptions::report_unread(const Scene& s) const {
   std::vector<std::string> given;
   for (const std::string& a : sets) given.push_back(a.substr(0, a.find('=')));
-  const std::string mode_name = s.mode == Mode::Dem ? "dem" : "lattice";
   for (const std::string& key : unread_keys(s, given)) {
-    const std::string what = "scene key '" + key + "' is not read in " + mode_name + " mode";
+    const std::string what = "scene key '" + key + "' is not read in " + mode_name(s.mode) + " mode";
     if (strict) throw InputError(what + " (--strict)");
     std::fprintf(stderr, "sandpic: warning: %s\n", what.c_str());
   }
@@ -435,6 +443,13 @@ struct CompareCommand {
     j["composition_error_per_band"] = c.composition;
     j["blur_sigma_px"] = c.blur_sigma_px;
     j["ssim_blurred"] = c.ssim_blurred;
+    // Each picture's mean outline slope, smoothed over 8 large-grain
+    // diameters as verify-dem's layers case measures it (--scale keeps a
+    // grain's size in pixels: the scene's own diameters at any scale).
+    double big = 0;
+    for (int k = 0; k < kClasses; ++k) big = std::max(big, grain_diameter_px(s, k));
+    j["scene_slope_deg"] = {scene_slope_deg(silhouette(decode_classes(ia, s.grains.colors)), 8 * big),
+                            scene_slope_deg(silhouette(decode_classes(ib, s.grains.colors)), 8 * big)};
     if (!diff_path.empty()) write_png(diff_path, difference_picture(ia, ib));
     print(c, j);
     // psnr_db is +inf for identical pictures: above every bound.
@@ -457,6 +472,7 @@ struct CompareCommand {
       return;
     }
     std::printf("ssim               %.6f\n", c.ssim);
+    std::printf("scene_slope_deg    %.2f  %.2f\n", j["scene_slope_deg"][0].get<double>(), j["scene_slope_deg"][1].get<double>());
     if (std::isfinite(c.psnr_db))
       std::printf("psnr_db            %.3f\n", c.psnr_db);
     else
@@ -558,6 +574,7 @@ int cli_main(int argc, char** argv) {
   auto stress = add_stress_command(app);
   auto studio = add_studio_command(app);
   auto verify = add_verify_command(app);
+  auto lammps = add_lammps_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -26,7 +26,7 @@ struct VerifyCommand {
     cmd->add_flag("--quick", quick, "piles of a few hundred grains, looser tolerances (about 3 minutes; ctest runs it)");
     cmd->add_option("--out", out, "folder for report.json and report.html")->required();
     cmd->add_option("--only", only, "case ids, comma-separated (settling, restitution, incline, rolling, notch, heap, "
-                                    "creep, layers, step)");
+                                    "creep, layers, step, engines)");
     cmd->add_option("--set", sets, "KEY=VALUE on every pile case's scene (heap, creep, layers, step), as render's "
                                    "--set; repeatable; not the keys the cases vary (layers, friction, rolling "
                                    "resistance, seeds)");

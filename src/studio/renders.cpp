@@ -8,6 +8,7 @@
 
 #include <tbb/task_arena.h>
 
+#include "src/errors.h"
 #include "src/output.h"
 #include "src/pipeline.h"
 
@@ -18,6 +19,8 @@ Renders::~Renders() {
 }
 
 int Renders::start(const Scene& s) {
+  // The studio runs no other program: LAMMPS is the command line's alone.
+  if (s.mode == Mode::Lammps) throw key_error("mode", "the studio does not run LAMMPS; use sandpic render --mode lammps");
   // Fails now, not in the background, when this build has no such backend.
   auto probe = make_simulator(s);
   std::lock_guard lock(mutex_);

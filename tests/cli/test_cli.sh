@@ -6,24 +6,7 @@ set -u
 BIN=$1
 ROOT=$2
 BULLET=${3:-with-bullet}
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-passed=0 failed=0
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
-
-# expect CODE DESCRIPTION -- COMMAND...: runs it, keeps stderr in $T/err.
-expect() {
-  local code=$1 what=$2
-  shift 3
-  "$@" >"$T/out" 2>"$T/err"
-  local rc=$?
-  if [ "$rc" = "$code" ]; then ok; else bad "$what: exit $rc, wanted $code; stderr: $(cat "$T/err")"; fi
-}
-err_has() { if grep -q -- "$1" "$T/err"; then ok; else bad "stderr lacks '$1': $(cat "$T/err")"; fi; }
-one_line() { if [ "$(wc -l <"$T/err")" = 1 ]; then ok; else bad "stderr is not one line: $(cat "$T/err")"; fi; }
-absent() { if [ ! -e "$1" ]; then ok; else bad "$1 was written"; fi; }
-is_png() { if [ "$(head -c 4 "$1" | od -An -c | tr -d ' ')" = "211PNG" ]; then ok; else bad "$1 is not a PNG"; fi; }
+source "$(dirname "$0")/checks.sh"
 
 # A complete render at quarter scale, with stats and stages.
 expect 0 "render" -- "$BIN" render -o "$T/a.png" --scale 0.25 --stats "$T/s.json" --stages "$T/stages"
@@ -57,7 +40,7 @@ else bad "--set physics_seed=2 after --seed 1 was not the picture of physics see
 
 # compare: JSON with every measure; a picture with itself is identical.
 expect 0 "compare" -- "$BIN" compare "$T/a.png" "$T/c.png" --json
-for k in '"ssim"' '"psnr_db"' '"silhouette_error"' '"composition_error"' '"composition_error_per_band"' '"ssim_blurred"'; do
+for k in '"ssim"' '"scene_slope_deg"' '"psnr_db"' '"silhouette_error"' '"composition_error"' '"composition_error_per_band"' '"ssim_blurred"'; do
   if grep -q -- "$k" "$T/out"; then ok; else bad "compare JSON lacks $k: $(cat "$T/out")"; fi
 done
 if grep -q '"identical": false' "$T/out"; then ok; else bad "two seeds compared as identical"; fi

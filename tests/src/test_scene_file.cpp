@@ -364,7 +364,14 @@ TEST(SceneRegistry, KeysAsJsonForTheStudio) {
   EXPECT_EQ(friction["min"], 0.0);
   EXPECT_EQ(friction["max"], 10.0);
   EXPECT_EQ(friction["default"], Scene{}.physics.friction);
-  EXPECT_EQ(friction["read_by"], (ordered_json{"lattice", "dem"}));
+  EXPECT_EQ(friction["read_by"], (ordered_json{"lattice", "dem", "lammps"}));
+  // The LAMMPS mode reads the physics it maps (docs/lammps.md), not the
+  // Bullet DEM's own keys (layers, step, stiffness).
+  EXPECT_TRUE(read_in_mode("dem.rolling_resistance", Mode::Lammps));
+  EXPECT_TRUE(read_in_mode("dem.water_viscosity_pa_s", Mode::Lammps));
+  EXPECT_FALSE(read_in_mode("dem.layers", Mode::Lammps));
+  EXPECT_FALSE(read_in_mode("dem.step_diameters", Mode::Lammps));
+  EXPECT_FALSE(read_in_mode("lattice.resolution", Mode::Lammps));
   EXPECT_EQ(find("segment.method")["choices"],
             (ordered_json{"ellipses", "explicit", "cells", "sketch", "pattern"}));
   EXPECT_EQ(find("segment.method")["area"], true);

@@ -4,6 +4,14 @@
 
 namespace sandpic::verify {
 
+// A check that |measured − expected| ≤ tolerance, or measured ≤ bound.
+inline VerifyCheck within(std::string name, double measured, double expected, double tolerance, std::string unit) {
+  return {std::move(name), std::move(unit), measured, expected, tolerance, VerifyCheck::Kind::Within};
+}
+inline VerifyCheck at_most(std::string name, double measured, double bound, std::string unit) {
+  return {std::move(name), std::move(unit), measured, bound, 0, VerifyCheck::Kind::AtMost};
+}
+
 // Single grains in the DEM's own world (physics/probe.h), against closed forms.
 VerifyCase settling(const VerifyOptions& opt);
 VerifyCase restitution(const VerifyOptions& opt);
@@ -16,5 +24,9 @@ VerifyCase heap(const VerifyOptions& opt);
 VerifyCase creep(const VerifyOptions& opt);
 VerifyCase layers(const VerifyOptions& opt);
 VerifyCase step(const VerifyOptions& opt);
+
+// The Bullet DEM against LAMMPS (physics/lammps_deck.h) from one placed
+// configuration: a column of grains collapsing in the water.
+VerifyCase engines(const VerifyOptions& opt);
 
 }  // namespace sandpic::verify

@@ -14,9 +14,6 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
 
-VerifyCheck within(std::string name, double measured, double expected, double tolerance, std::string unit) {
-  return {std::move(name), std::move(unit), measured, expected, tolerance, VerifyCheck::Kind::Within};
-}
 
 // A window wide and tall enough for one grain's run.
 Scene probe_scene(bool water) {

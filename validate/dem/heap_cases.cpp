@@ -26,12 +26,6 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
-VerifyCheck within(std::string name, double measured, double expected, double tolerance, std::string unit) {
-  return {std::move(name), std::move(unit), measured, expected, tolerance, VerifyCheck::Kind::Within};
-}
-VerifyCheck at_most(std::string name, double measured, double bound, std::string unit) {
-  return {std::move(name), std::move(unit), measured, bound, 0, VerifyCheck::Kind::AtMost};
-}
 
 // What the piles are in each mode.
 struct Plan {

@@ -26,7 +26,8 @@ const std::vector<std::pair<std::string, CaseFn>>& cases() {
   static const std::vector<std::pair<std::string, CaseFn>> all = {
       {"settling", verify::settling}, {"restitution", verify::restitution}, {"incline", verify::incline},
       {"rolling", verify::rolling},   {"notch", verify::notch},             {"heap", verify::heap},
-      {"creep", verify::creep},       {"layers", verify::layers},           {"step", verify::step}};
+      {"creep", verify::creep},       {"layers", verify::layers},           {"step", verify::step},
+      {"engines", verify::engines}};
   return all;
 }
 

@@ -71,7 +71,7 @@ struct VerifyReport {
 };
 
 // The case ids, in the order they run: settling, restitution, incline,
-// rolling, notch, heap, creep, layers, step.
+// rolling, notch, heap, creep, layers, step, engines.
 const std::vector<std::string>& verify_case_ids();
 
 // Throws InputError (exit 2) for an id of opt.only that is not a case and

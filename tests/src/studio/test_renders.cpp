@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "src/errors.h"
 #include "src/studio/api.h"
 #include "tests/test_folder.h"
 
@@ -23,6 +24,22 @@ std::shared_ptr<const RenderJob> wait_done(const Renders& r, int id) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   return nullptr;
+}
+
+// The studio never runs another program: a scene in mode lammps is refused
+// at once, naming the key, and nothing is started or written.
+TEST(StudioRenders, TheLammpsModeIsRefused) {
+  const std::string dir = test::fresh_folder("renders-lammps") + "/studio-renders";
+  Renders renders(dir);
+  Scene s = scaled(scene_from_request("{}", "."), 0.2);
+  s.mode = Mode::Lammps;
+  try {
+    renders.start(s);
+    FAIL() << "a lammps render started";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("mode"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir));
 }
 
 TEST(StudioRenders, AFinishedRenderIsKeptOnDisk) {
