@@ -76,10 +76,28 @@ ordered_json deck_json(const LammpsDeck& d) {
                       {"max_steps", d.max_steps}};
 }
 
-// A child process whose output we read; killed if we leave early.
+std::string on_path(const std::string& name);
+
+// A child process whose output we read; killed if we leave early. All it
+// needs is made before fork(): in the child of a threaded process only
+// async-signal-safe calls are allowed (another thread may hold malloc's lock).
 class Child {
  public:
   Child(const std::vector<std::string>& argv, const std::string& dir) {
+    std::string exe = argv.front().find('/') == std::string::npos ? on_path(argv.front()) : argv.front();
+    if (exe.empty()) exe = argv.front();
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    // OpenMPI refuses root without these; one OpenMP thread per rank.
+    std::vector<std::string> env_text = {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1", "OMP_NUM_THREADS=1"};
+    for (char** e = environ; *e; ++e) {
+      const std::string v = *e;
+      if (v.rfind("OMPI_ALLOW_RUN_AS_ROOT", 0) != 0 && v.rfind("OMP_NUM_THREADS=", 0) != 0) env_text.push_back(v);
+    }
+    std::vector<char*> env;
+    for (std::string& v : env_text) env.push_back(v.data());
+    env.push_back(nullptr);
     int fds[2];
     if (pipe(fds) != 0) throw SimulationError("lammps: cannot make a pipe");
     const pid_t parent = getpid();
@@ -92,14 +110,7 @@ class Child {
       dup2(fds[1], 1), dup2(fds[1], 2);
       close(fds[0]), close(fds[1]);
       if (chdir(dir.c_str()) != 0) _exit(127);
-      // OpenMPI refuses root without these; one OpenMP thread per rank.
-      setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-      setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-      setenv("OMP_NUM_THREADS", "1", 1);
-      std::vector<char*> a;
-      for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
-      a.push_back(nullptr);
-      execvp(a[0], a.data());
+      execve(exe.c_str(), args.data(), env.data());
       _exit(127);
     }
     close(fds[1]);
@@ -342,13 +353,21 @@ LammpsRun run_lammps(const std::string& input, const std::string& folder, const 
   return run;
 }
 
-std::string find_lmp(const LammpsOptions& opt) {
-  if (opt.lmp.find('/') != std::string::npos) return access(opt.lmp.c_str(), X_OK) == 0 ? opt.lmp : "";
+namespace {
+
+std::string on_path(const std::string& name) {
   const char* path = std::getenv("PATH");
   std::istringstream dirs(path ? path : "/usr/bin:/bin");
   for (std::string d; std::getline(dirs, d, ':');)
-    if (!d.empty() && access((d + "/" + opt.lmp).c_str(), X_OK) == 0) return d + "/" + opt.lmp;
+    if (!d.empty() && access((d + "/" + name).c_str(), X_OK) == 0) return d + "/" + name;
   return "";
+}
+
+}  // namespace
+
+std::string find_lmp(const LammpsOptions& opt) {
+  if (opt.lmp.find('/') != std::string::npos) return access(opt.lmp.c_str(), X_OK) == 0 ? opt.lmp : "";
+  return on_path(opt.lmp);
 }
 
 std::unique_ptr<Simulator> make_lammps_simulator(const LammpsOptions& opt) {
