@@ -43,22 +43,25 @@ out, sandpic, frictions, seeds = sys.argv[1], sys.argv[2], sys.argv[3].split(), 
 def cmp(a, b):
     return json.loads(subprocess.run([sandpic, "compare", "--json", a, b], capture_output=True, text=True, check=True).stdout)
 engines = ["lammps", "lid", "all-dynamic", "three"]
-print("| friction | engine | scene slope per seed (mean) | simulate_s | seed-to-seed floor | silhouette error vs LAMMPS | / own floor | / LAMMPS floor |")
+print("| friction | engine | scene slope per seed (mean ± spread) | simulate_s | silhouette floor | silhouette vs LAMMPS (/ own floor, / LAMMPS floor) | composition floor | composition vs LAMMPS |")
 print("| --- | --- | --- | --- | --- | --- | --- | --- |")
+pairs = list(itertools.combinations(seeds, 2))
 for mu in frictions:
     p = lambda e, s: f"{out}/{e}-mu{mu}-seed{s}.png"
-    floor = {}
-    for e in engines:
-        pairs = list(itertools.combinations(seeds, 2))
-        floor[e] = st.mean(cmp(p(e, a), p(e, b))["silhouette_error"] for a, b in pairs) if pairs else float("nan")
+    within = {e: [cmp(p(e, a), p(e, b)) for a, b in pairs] for e in engines}
+    floor = {e: st.mean(c["silhouette_error"] for c in within[e]) for e in engines}
     for e in engines:
         slopes = [cmp(p(e, s), p(e, s))["scene_slope_deg"][0] for s in seeds]
         times = [json.load(open(p(e, s)[:-4] + ".json"))["timing"]["simulate_s"] for s in seeds]
+        comp_floor = st.mean(c["composition_error"] for c in within[e])
         if e == "lammps":
-            err = "", "", ""
+            sil = comp = ""
         else:
-            x = st.mean(cmp(p(e, a), p("lammps", b))["silhouette_error"] for a in seeds for b in seeds)
-            err = f"{x:.4f}", f"{x / floor[e]:.2f}x", f"{x / floor['lammps']:.2f}x"
-        print(f"| {mu} | {e} | {' / '.join(f'{v:.1f}' for v in slopes)} ({st.mean(slopes):.1f} ± {st.stdev(slopes) if len(slopes) > 1 else 0:.1f}) | "
-              f"{min(times):.0f}-{max(times):.0f} | {floor[e]:.4f} | {err[0]} | {err[1]} | {err[2]} |")
+            across = [cmp(p(e, a), p("lammps", b)) for a in seeds for b in seeds]
+            x = st.mean(c["silhouette_error"] for c in across)
+            sil = f"{x:.4f} ({x / floor[e]:.2f}x, {x / floor['lammps']:.2f}x)"
+            comp = f"{st.mean(c['composition_error'] for c in across):.4f}"
+        spread = st.stdev(slopes) if len(slopes) > 1 else 0
+        print(f"| {mu} | {e} | {' / '.join(f'{v:.1f}' for v in slopes)} ({st.mean(slopes):.1f} ± {spread:.1f}) | "
+              f"{min(times):.0f}-{max(times):.0f} | {floor[e]:.4f} | {sil} | {comp_floor:.4f} | {comp} |")
 PY
