@@ -314,6 +314,7 @@ LammpsDeck lammps_deck(const SimInput& in) {
   d.settle_limit_s = d.release_end_s + slowest + kSettleLimitS;
   const int64_t settle_steps = std::llround((d.settle_limit_s - d.release_end_s) / c.dt);
   d.max_steps = d.release_steps + settle_steps;
+  d.expected_steps = std::min<int64_t>(d.max_steps, d.release_steps + std::llround((slowest + 0.5) / c.dt));
   o += settle_text(d.settle_speed_px_s, d.thermo_steps, settle_steps);
   d.input = std::move(o);
   return d;
@@ -351,6 +352,7 @@ LammpsDeck lammps_placed_deck(const Scene& s, const std::vector<PlacedGrain>& gr
   const int64_t start = std::llround(0.05 / d.contact.dt);
   o += "run " + std::to_string(start) + " post no\n";
   d.max_steps = std::max<int64_t>(start + 1, std::llround(max_s / d.contact.dt));
+  d.expected_steps = d.max_steps;
   d.settle_limit_s = max_s;
   o += settle_text(d.settle_speed_px_s, d.thermo_steps, d.max_steps - start);
   d.input = std::move(o);

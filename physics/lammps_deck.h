@@ -34,6 +34,7 @@ struct LammpsDeck {
   double settle_limit_s = 0;  // the run stops here if it has not settled by then
   double settle_speed_px_s = 0;  // settled: no grain faster than this
   int64_t release_steps = 0, max_steps = 0;
+  int64_t expected_steps = 0;  // the progress bar's: the release, the last grain's fall and half a second
   int64_t delayed = 0;        // creations moved to a later batch: another grain was in the way
   double late_mean_s = 0, late_max_s = 0;  // how far behind the release schedule grains were created
   int thermo_steps = 0;       // a thermo line every this many steps (the progress bar reads them)
