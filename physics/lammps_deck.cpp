@@ -137,7 +137,7 @@ std::string settle_text(double speed, int thermo_steps, int64_t steps) {
 
 }  // namespace
 
-LammpsContact lammps_contact(const Scene& s, const GrainSet& grains, double column_weight) {
+LammpsContact lammps_contact(const Scene& s, const GrainSet& grains, double column_weight, double stiffness) {
   const Water w = water_model(s);
   const auto r = dem_radii(s);
   const auto m = masses(s, r);
@@ -158,9 +158,12 @@ LammpsContact lammps_contact(const Scene& s, const GrainSet& grains, double colu
   // The deepest resting contact: the weight of a column one mean diameter
   // wide, times the force chains, between two small grains (the smallest R).
   c.load = kChainFactor * std::max(single, column_weight > 0 ? column_weight : weight * mean_d / s.window.width);
-  c.target_overlap_px = kTargetOverlap * 2 * r_small;
-  const double R = r_small / 2, delta = c.target_overlap_px;
-  c.kn = c.load / (std::sqrt(R) * std::pow(delta, 1.5));
+  const double R = r_small / 2;
+  c.kn = stiffness * c.load / (std::sqrt(R) * std::pow(kTargetOverlap * 2 * r_small, 1.5));
+  // The overlap the design load makes at that stiffness (the target, unless
+  // --lammps-stiffness scales it).
+  c.target_overlap_px = std::pow(c.load / (c.kn * std::sqrt(R)), 2.0 / 3.0);
+  const double delta = c.target_overlap_px;
   // A grain landing on the floor at its settling speed overlaps more, for
   // a moment: ½mv² = (2/5)·k_n·√r·δ^2.5 (reported, not bounded: bounding it
   // too took a 20x shorter step at the default scene).
@@ -184,7 +187,7 @@ LammpsContact lammps_contact(const Scene& s, const GrainSet& grains, double colu
   return c;
 }
 
-LammpsDeck lammps_deck(const SimInput& in) {
+LammpsDeck lammps_deck(const SimInput& in, double stiffness) {
   const Scene& s = in.scene;
   const double W = s.window.width, H = s.window.height;
   const Water w = water_model(s);
@@ -195,7 +198,7 @@ LammpsDeck lammps_deck(const SimInput& in) {
       throw key_error("grains.density_g_cm3[" + std::to_string(k) + "]",
                       "S" + std::to_string(k + 1) + "'s grains are not denser than the water: they would not sink");
   LammpsDeck d;
-  d.contact = lammps_contact(s, in.grains);
+  d.contact = lammps_contact(s, in.grains, 0, stiffness);
   const LammpsContact& c = d.contact;
   const double r_small = *std::min_element(r.begin(), r.end()), r_big = *std::max_element(r.begin(), r.end());
   d.settle_speed_px_s = kSettleDiametersPerS * 2 * r_small;

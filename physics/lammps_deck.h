@@ -47,7 +47,9 @@ struct LammpsDeck {
 // until a few diameters above the pile, whose height a deck written in
 // advance cannot know): each grain is created under the lid early enough to
 // reach every height when the Bullet backend's grain would.
-LammpsDeck lammps_deck(const SimInput& in);
+// `stiffness` multiplies the contact's (the step follows): the check that
+// the soft contacts do not set the piles (docs/lammps.md).
+LammpsDeck lammps_deck(const SimInput& in, double stiffness = 1);
 
 // Grains placed by hand (y up), all at rest at t = 0, then the same settle
 // as a scene's deck, for at most `max_s` simulated seconds: verify-dem's
@@ -62,6 +64,6 @@ LammpsDeck lammps_placed_deck(const Scene& s, const std::vector<PlacedGrain>& gr
 // The deck's contact model and step for a scene (what stats and docs
 // report); `column_weight` > 0: the weight the heaviest column one mean
 // diameter wide carries (else estimated from the grains over the window).
-LammpsContact lammps_contact(const Scene& s, const GrainSet& grains, double column_weight = 0);
+LammpsContact lammps_contact(const Scene& s, const GrainSet& grains, double column_weight = 0, double stiffness = 1);
 
 }  // namespace sandpic

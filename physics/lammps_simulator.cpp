@@ -197,6 +197,19 @@ std::vector<DumpAtom> read_lammps_dump(const std::string& path, size_t atoms) {
 
 namespace {
 
+// A dump drawn by --from-dump: the atoms.txt its deck was written with, if it
+// lies beside it, must be this scene's (same grains, same order of creation).
+void check_atoms_beside(const std::string& dump, const LammpsDeck& deck) {
+  const std::string path = (fs::path(dump).parent_path() / "atoms.txt").string();
+  std::ifstream in(path);
+  if (!in) return;
+  std::stringstream text;
+  text << in.rdbuf();
+  if (text.str() != atoms_text(deck))
+    throw InputError(path + ": the deck beside " + dump + " was not written for this scene (another scene, seed, "
+                            "scale or --lammps-stiffness)");
+}
+
 // The deepest overlap between two grains at rest (px), by a grid of cells
 // one large diameter wide.
 double deepest_overlap(const std::vector<float>& x, const std::vector<float>& y, const std::vector<double>& r,
@@ -226,7 +239,7 @@ class LammpsSimulator : public Simulator {
   SimResult simulate(const SimInput& in, Progress& progress) override {
     if (in.frames.wanted())
       throw InputError("--frames and --video are not available in mode lammps (its grains are read back once, at the end)");
-    const LammpsDeck deck = lammps_deck(in);
+    const LammpsDeck deck = lammps_deck(in, opt_.stiffness);
     ordered_json st{{"engine", "LAMMPS (pair_style granular)"}};
     std::string dump = opt_.from_dump;
     Folder folder;
@@ -254,6 +267,7 @@ class LammpsSimulator : public Simulator {
       dump = folder.path + "/final.dump";
       st["folder"] = folder.temporary ? ordered_json() : ordered_json(folder.path);
     }
+    if (!opt_.from_dump.empty()) check_atoms_beside(dump, deck);
     const std::vector<DumpAtom> atoms = read_lammps_dump(dump, deck.grain_of_atom.size());
     const Scene& s = in.scene;
     const int W = s.window.width, H = s.window.height;
@@ -286,6 +300,7 @@ class LammpsSimulator : public Simulator {
     st["ranks"] = opt_.from_dump.empty() ? ordered_json(opt_.launcher.empty() ? opt_.ranks : 0) : ordered_json();
     st["launcher"] = opt_.launcher.empty() ? ordered_json() : ordered_json(opt_.launcher);
     st["from_dump"] = opt_.from_dump.empty() ? ordered_json() : ordered_json(opt_.from_dump);
+    st["stiffness_factor"] = opt_.stiffness;
     st["steps"] = last_step;
     st["simulated_s"] = double(last_step) * deck.contact.dt;
     const ordered_json figures = deck_json(deck);

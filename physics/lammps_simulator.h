@@ -21,6 +21,7 @@ struct LammpsOptions {
   std::string launcher;     // instead of mpirun, e.g. "srun -n 256" (split on spaces)
   std::string folder;       // keep the deck, log and dump here (default: a temporary folder, removed)
   std::string from_dump;    // read this dump of the deck's run instead of running LAMMPS
+  double stiffness = 1;     // multiplies the contact stiffness (the step follows)
 };
 
 std::unique_ptr<Simulator> make_lammps_simulator(const LammpsOptions& opt);

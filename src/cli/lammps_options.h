@@ -20,6 +20,9 @@ struct LammpsCliOptions {
     cmd->add_option("--lmp", opt.lmp, "--mode lammps: the LAMMPS executable")->capture_default_str();
     cmd->add_option("--lammps-dir", opt.folder, "--mode lammps: keep the deck, log and dump in this folder "
                                                 "(default: a temporary one, kept only if LAMMPS fails)");
+    cmd->add_option("--lammps-stiffness", opt.stiffness, "--mode lammps: multiplies the soft contacts' stiffness "
+                                                         "(the step follows; 0.5: the check that they do not set the piles)")
+        ->check(CLI::Range(0.01, 100.0));
     cmd->add_option("--from-dump", opt.from_dump, "--mode lammps: draw this dump of the scene's deck (a run of "
                                                   "sandpic export-lammps's run.sh) instead of running LAMMPS");
   }

@@ -131,6 +131,18 @@ TEST(LammpsDeck, ContactMeetsItsDesign) {
   EXPECT_EQ(c.rolling, s.dem.rolling_resistance);
 }
 
+// Half the stiffness: the design load presses 2^(2/3) deeper (Hertz) and the
+// step lengthens with the softer contact's period.
+TEST(LammpsDeck, StiffnessScalesTheContactAndTheStep) {
+  const Scene s = small_scene();
+  const Prepared p = prepare(s);
+  const LammpsContact one = lammps_contact(s, p.init.grains), half = lammps_contact(s, p.init.grains, 0, 0.5);
+  EXPECT_NEAR(half.kn, one.kn / 2, 1e-9 * one.kn);
+  EXPECT_NEAR(half.target_overlap_px, one.target_overlap_px * std::pow(2.0, 2.0 / 3.0), 1e-9);
+  EXPECT_GT(half.dt, one.dt * 1.1);
+  EXPECT_EQ(half.load, one.load);
+}
+
 // A grain that would not sink is refused with its key, as in the DEM.
 TEST(LammpsDeck, RefusesGrainsThatFloat) {
   Scene s = small_scene();
