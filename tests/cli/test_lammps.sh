@@ -55,6 +55,10 @@ chmod +x "$T/fake-lmp"
 expect 3 "lammps fails" -- "$BIN" render --mode lammps "${TINY[@]}" --lmp "$T/fake-lmp" --lammps-dir "$T/failed" -o "$T/e5.png"
 one_line; err_has "Lost atoms"; absent "$T/e5.png"
 
+# Half the stiffness: every grain still in the picture, settled, the factor in the stats.
+expect 0 "half stiffness" -- "$BIN" render --mode lammps "${TINY[@]}" --lammps-stiffness 0.5 -o "$T/h.png" --stats "$T/h.json"
+for k in '"in_picture": 360' '"settled": true' '"stiffness_factor": 0.5'; do has "$T/h.json" "$k"; done
+
 # Two ranks: the same grains, all in the picture (the bytes may differ).
 expect 0 "two ranks" -- "$BIN" render --mode lammps "${TINY[@]}" --ranks 2 -o "$T/r2.png" --stats "$T/r2.json"
 has "$T/r2.json" '"in_picture": 360'
