@@ -192,7 +192,6 @@ LammpsDeck lammps_deck(const SimInput& in, double stiffness) {
   const double W = s.window.width, H = s.window.height;
   const Water w = water_model(s);
   const auto r = dem_radii(s);
-  const auto m = masses(s, r);
   for (uint8_t k : in.grains.cls)
     if (!(w.gravity_px_s2[k] > 0))
       throw key_error("grains.density_g_cm3[" + std::to_string(k) + "]",
