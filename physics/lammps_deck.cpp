@@ -244,14 +244,25 @@ LammpsDeck lammps_deck(const SimInput& in, double stiffness) {
   const double bin_w = 2 * r_big;
   std::vector<std::vector<Aloft>> bins(size_t(std::ceil(W / bin_w)) + 1);
   auto bin_of = [&](double x) { return std::clamp(size_t(x / bin_w), size_t(0), bins.size() - 1); };
-  auto free_at = [&](double x, double y, int k, double t) {
+  // Free: no grain of the stream where this one would be created, and none
+  // it would meet (a fast grain catching a slow one) before it leaves the
+  // creation zone: a meeting knocks both aside, away from where the next
+  // creations are checked against (a grain created inside a knocked-aside
+  // one blew a run up). Straight falls: the gap changes linearly.
+  const double zone_bottom = H - kLowestCreation * r_big - 4 * r_big;
+  auto free_at = [&](double x, double y, int k, double t, double v) {
+    const double leave = v > 0 ? std::max(0.0, y - zone_bottom) / v : 0;
     for (size_t b = bin_of(x) - std::min<size_t>(bin_of(x), 1); b <= std::min(bins.size() - 1, bin_of(x) + 1); ++b) {
-      auto& v = bins[b];
-      // Grains fallen below the lowest creation cannot be in the way.
-      std::erase_if(v, [&](const Aloft& a) { return a.y - flight[a.k].drop(t - a.t) < H - kLowestCreation * r_big - 4 * r_big; });
-      for (const Aloft& a : v) {
-        const double dx = a.x - x, dy = a.y - flight[a.k].drop(t - a.t) - y, reach = r[a.k] + r[k] + kClearance * r_small;
-        if (dx * dx + dy * dy < reach * reach) return false;
+      auto& in_bin = bins[b];
+      // Grains fallen below the creation zone cannot be in the way.
+      std::erase_if(in_bin, [&](const Aloft& a) { return a.y - flight[a.k].drop(t - a.t) < zone_bottom; });
+      for (const Aloft& a : in_bin) {
+        const double reach = r[a.k] + r[k] + kClearance * r_small, dx = a.x - x;
+        if (std::abs(dx) >= reach) continue;
+        const double dy0 = a.y - flight[a.k].drop(t - a.t) - y;
+        const double dy1 = dy0 + (v - flight[a.k].speed(t - a.t)) * leave;  // a's height over it as it leaves
+        const double closest = dy0 * dy1 <= 0 ? 0 : std::min(std::abs(dy0), std::abs(dy1));
+        if (dx * dx + closest * closest < reach * reach) return false;
       }
     }
     return true;
@@ -276,7 +287,7 @@ LammpsDeck lammps_deck(const SimInput& in, double stiffness) {
       // delayed insertions do.
       const double late = std::min(t - (g.t - t0), flight[k].time_to(kLowestCreation * r_big));
       const double y = H - r[k] - flight[k].drop(late);
-      if (!free_at(g.x, y, k, t)) {
+      if (!free_at(g.x, y, k, t, flight[k].speed(late))) {
         later.push_back(g);
         ++d.delayed;
         continue;
