@@ -96,6 +96,21 @@ TEST(LammpsDeck, CreationsNeverOverlapTheStream) {
     }
   }
   EXPECT_EQ(made.size(), d.grain_of_atom.size());
+  // Nor do two grains meet while both are still near the lid (falling
+  // straight, sampled every millisecond): a meeting there knocks them aside
+  // from where later creations are checked against.
+  const double r_big = *std::max_element(r.begin(), r.end());
+  const double zone = s.window.height - 12 * r_big;
+  for (size_t i = 0; i < made.size(); ++i)
+    for (size_t j = i + 1; j < made.size(); ++j) {
+      const Made &a = made[i], &b = made[j];
+      if (std::abs(a.x - b.x) >= a.r + b.r) continue;
+      for (double t = b.t; t < b.t + 0.5; t += 0.001) {
+        const double ya = a.y - a.v * (t - a.t), yb = b.y - b.v * (t - b.t);
+        if (ya < zone || yb < zone) break;
+        ASSERT_GE(std::hypot(a.x - b.x, ya - yb), a.r + b.r - 1e-6) << "grains " << i << " and " << j << " at t " << t;
+      }
+    }
 }
 
 // Same scene, same seed: the same deck, byte for byte; another physics seed
