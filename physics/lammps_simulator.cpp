@@ -246,8 +246,6 @@ class LammpsSimulator : public Simulator {
     std::string version;
     int64_t last_step = 0;
     if (dump.empty()) {
-      const std::string lmp = find_lmp(opt_);
-      if (lmp.empty()) throw key_error("mode", "'lammps' needs LAMMPS's `lmp` (apt-get install lammps, or scripts/setup.sh)");
       if (opt_.folder.empty()) {
         std::string tmpl = (fs::temp_directory_path() / "sandpic-lammps-XXXXXX").string();
         if (!mkdtemp(tmpl.data())) throw InputError("cannot make a temporary folder in " + fs::temp_directory_path().string());

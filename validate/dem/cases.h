@@ -1,8 +1,18 @@
 #pragma once
 // verify-dem's cases (validate/dem/verify_dem.h), one function each.
+#include <cstdio>
+#include <string>
+
 #include "validate/dem/verify_dem.h"
 
 namespace sandpic::verify {
+
+// A number in a check's name or a note, printf-style ("%.1f").
+inline std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
 
 // A check that |measured − expected| ≤ tolerance, or measured ≤ bound.
 inline VerifyCheck within(std::string name, double measured, double expected, double tolerance, std::string unit) {

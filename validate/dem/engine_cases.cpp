@@ -27,12 +27,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 // The column: nx × ny sites 1.05 large diameters apart, each a large (S1)
 // or small (S3) grain by the seed, jittered by a tenth of a small diameter.
 std::vector<PlacedGrain> column(const Scene& s, int nx, int ny, uint64_t seed) {

@@ -20,12 +20,6 @@
 namespace sandpic::verify {
 namespace {
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 
 // What the piles are in each mode.
 struct Plan {
