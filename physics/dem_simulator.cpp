@@ -74,6 +74,7 @@ class DemRun {
   template <class F>
   void for_each_body(F f) const;
   double surface(double x, double r) const;
+  double insert_height(double x, int k, const Outlet& o) const;
   void sample_layers();
   double kinetic_energy_j() const;
   ordered_json substep_stats() const;
@@ -113,6 +114,8 @@ class DemRun {
   std::vector<int32_t> dynamic_, statics_, still_statics_, fixed_spheres_;
   double buried_px_ = 0;  // a sphere of fixed_spheres_ this far under H_s leaves for the ground
   Arrivals arrivals_;
+  std::vector<double> due_;     // per falling-order index: when the grain was due to become a body
+  double late_sum_ = 0, late_max_ = 0;  // how much later than due grains became bodies (crowding)
   std::vector<float> landed_;   // tops of slow dynamic grains and static bodies, per column, this cycle
   int64_t released_ = 0, inserted_ = 0, settled_ = 0, fixed_ = 0, delayed_ = 0;
   int64_t static_sleeps_ = 0, static_wakes_ = 0;  // wake_stage: static bodies made spheres, and back
@@ -173,6 +176,7 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
   rule_.support_px = 0.25 * small_d_;
   const size_t n = size_t(in.grains.size());
   layer_.assign(n, Layer::Waiting);
+  due_.assign(n, 0.0);
   slot_.assign(n, -1);
   rested_.assign(n, 0);
   anchor_.assign(n, Vec2(NAN, NAN));
@@ -190,22 +194,35 @@ double DemRun::surface(double x, double r) const {
   return h;
 }
 
+// Where a grain of class k falling at x becomes a body: dem.insert_gap_diameters
+// above the pile, but never above its outlet, where its fall begins (paper §7:
+// the grains fall "as solid bodies" and collide while falling; a larger gap
+// simulates more of that fall, and none is simulated twice). Above a pile that
+// has reached the outlet, its centre a diameter above the pile.
+double DemRun::insert_height(double x, int k, const Outlet& o) const {
+  const double r = radius_[k], below = surface(x, r);
+  const double outlet_up = std::max(H_ - o.centre.y(), below + 2 * r);
+  return std::min({below + s_.dem.insert_gap_diameters * 2 * r, outlet_up, H_ - r});
+}
+
 // Stage: grains leave their units at dem.release_rate in falling order and
-// are scheduled to arrive near the pile: Eq. 1-2 to the outlet, then an
-// analytic fall at their settling speed (nothing to collide with up there).
+// are scheduled to become bodies: Eq. 1-2 to the outlet, then (with a
+// dem.insert_gap_diameters below the drop) an analytic fall at their
+// settling speed down to insert_height.
 void DemRun::release_stage() {
   while (released_ < n_ && double(released_) / s_.dem.release_rate <= t_) {
     const int32_t id = in_.order.grain[size_t(released_)];
     const int k = in_.grains.cls[size_t(id)];
     const Outlet& o = outlets_[size_t(unit_of_order_[size_t(released_)])];
     ReleasePath path = release(model_, o, in_.grains, id);
-    const double land = surface(path.exit_x, radius_[k]) + s_.dem.insert_gap_diameters * 2 * radius_[k];
-    arrivals_.push({arrival_time(t_, path, H_ - o.centre.y(), land, water_.terminal_px_s[k]), released_});
+    const double land = insert_height(path.exit_x, k, o);
+    due_[size_t(released_)] = arrival_time(t_, path, H_ - o.centre.y(), land, water_.terminal_px_s[k]);
+    arrivals_.push({due_[size_t(released_)], released_});
     ++released_;
   }
 }
 
-// Stage: an arriving grain becomes a body a few diameters above the pile,
+// Stage: an arriving grain becomes a body at insert_height (its outlet, by default),
 // at its settling speed; if another grain is in the way it tries again
 // kRetrySteps later.
 void DemRun::insert_stage() {
@@ -221,7 +238,7 @@ void DemRun::insert_stage() {
     const double r = radius_[k];
     const Outlet& o = outlets_[size_t(unit_of_order_[size_t(a.order)])];
     double x = std::clamp(exit_x(model_, o, id), r, W_ - r);
-    double y = std::min(surface(x, r) + s_.dem.insert_gap_diameters * 2 * r, H_ - r);
+    double y = insert_height(x, k, o);
     if (crowding_.crowded(Vec2(x, y), r)) {
       later.push_back({t_ + kRetrySteps * dt_, a.order});
       ++delayed_;
@@ -233,6 +250,8 @@ void DemRun::insert_stage() {
     dynamic_.push_back(id);
     crowding_.add(Vec2(x, y), r);  // in the way of the next arrivals of this step
     ++inserted_;
+    late_sum_ += t_ - due_[size_t(a.order)];
+    late_max_ = std::max(late_max_, t_ - due_[size_t(a.order)]);
     energy_budget_ += mass_[k] * (0.5 * v.squaredNorm() + water_.gravity_px_s2[k] * y);
   }
   for (const Arrival& a : later) arrivals_.push(a);
@@ -624,7 +643,7 @@ cv::Mat DemRun::frame_map() const {
     const double since = t_ - double(i) / s_.dem.release_rate;
     Vec2 p(path.exit_x, o.centre.y() + water_.terminal_px_s[k] * (since - path.t));  // y down
     if (since < path.t) p = path.start + Vec2(path.vx * since, 0.5 * model_.gravity_px_s2 * since * since);
-    const double lowest = H_ - (surface(p.x(), radius_[k]) + s_.dem.insert_gap_diameters * 2 * radius_[k]);
+    const double lowest = H_ - insert_height(p.x(), k, o);
     x[size_t(id)] = float(p.x()), y[size_t(id)] = float(std::min(p.y(), lowest));
   }
   cv::Mat map = class_map_from_grains(W_, H_, x, y, in_.grains.cls, 1.2, kNoSand);
@@ -763,6 +782,8 @@ SimResult DemRun::run() {
     out.stats["static_wakes"] = static_wakes_;
   }
   out.stats["insertions_delayed"] = delayed_;
+  out.stats["insertions_late_mean_s"] = inserted_ ? late_sum_ / double(inserted_) : 0.0;
+  out.stats["insertions_late_max_s"] = late_max_;
   out.stats["deepest_overlap_px"] = deepest_;
   out.stats["deepest_overlap_diameters"] = deepest_ / small_d_;
   out.stats["kinetic_energy_end_J"] = kinetic_end;

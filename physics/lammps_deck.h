@@ -40,13 +40,16 @@ struct LammpsDeck {
   int thermo_steps = 0;       // a thermo line every this many steps (the progress bar reads them)
 };
 
-// Everything but the grains' flight to the pile is the Bullet backend's:
+// Everything but the start of the grains' fall is the Bullet backend's:
 // release at dem.release_rate in falling order, Eq. 1-2 to the outlet
-// (src/release.h), then straight down at the class's settling speed. LAMMPS
-// simulates that fall from the top of the window (in Bullet it is analytic
-// until a few diameters above the pile, whose height a deck written in
-// advance cannot know): each grain is created under the lid early enough to
-// reach every height when the Bullet backend's grain would.
+// (src/release.h), then down at the class's settling speed. The Bullet
+// backend makes a grain a body at its outlet, or above the pile where the
+// pile has reached the outlet; a deck written in advance cannot know the
+// pile's height, so each grain is created under the lid, early enough to
+// pass its outlet when the Bullet backend's grain would, and falls from
+// there (created at the outlets instead, a first try piled the default
+// scene high at the walls and low in the middle, unlike either engine's
+// other runs: not understood, docs/notebook/2026-12-04-the-fall.md).
 // `stiffness` multiplies the contact's (the step follows): the check that
 // the soft contacts do not set the piles (docs/lammps.md).
 LammpsDeck lammps_deck(const SimInput& in, double stiffness = 1);

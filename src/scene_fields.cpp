@@ -788,7 +788,9 @@ std::vector<Field> make_fields() {
            "with dem.static_bodies: a static grain is a body only while a dynamic grain is within this many "
            "largest-grain diameters, otherwise an immovable sphere: faster, steeper piles (0: no limit)"),
       real("dem.insert_gap_diameters", [](auto& s) -> auto& { return s.dem.insert_gap_diameters; }, 0.5, 1e4,
-           "a falling grain becomes a body this far above the pile (diameters); above, its flight is analytic"),
+           "a falling grain becomes a body this far above the pile (diameters), never above its outlet; above, its "
+           "flight is analytic (the default: none, the whole fall is simulated, as paper §7 has it; a few diameters "
+           "is faster, but grains no longer meet in the water)"),
       real("dem.max_overlap", [](auto& s) -> auto& { return s.dem.max_overlap; }, 0.01, 10,
            "divergence: two grains overlapping by more than this (small-grain diameters) stop the run"),
       real("dem.target_overlap", [](auto& s) -> auto& { return s.dem.target_overlap; }, 0.001, 10,
