@@ -47,9 +47,11 @@ struct LammpsDeck {
 // pile has reached the outlet; a deck written in advance cannot know the
 // pile's height, so each grain is created under the lid, early enough to
 // pass its outlet when the Bullet backend's grain would, and falls from
-// there (created at the outlets instead, a first try piled the default
-// scene high at the walls and low in the middle, unlike either engine's
-// other runs: not understood, docs/notebook/2026-12-04-the-fall.md).
+// there. The pile does reach the lowest outlets (the default scene's bottom
+// row of units falls until late, their outlets 35 px up at --scale 0.1, the
+// piles 31-39 px high at the end): created at the outlets, a first try piled
+// that scene high at the walls and low in the middle, most likely grains
+// created inside the pile and thrown aside (docs/notebook/2026-12-04-the-fall.md).
 // `stiffness` multiplies the contact's (the step follows): the check that
 // the soft contacts do not set the piles (docs/lammps.md).
 LammpsDeck lammps_deck(const SimInput& in, double stiffness = 1);
