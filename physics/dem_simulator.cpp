@@ -222,7 +222,7 @@ void DemRun::release_stage() {
   }
 }
 
-// Stage: an arriving grain becomes a body at insert_height (its outlet, by default),
+// Stage: an arriving grain becomes a body at insert_height (a few diameters above the pile),
 // at its settling speed; if another grain is in the way it tries again
 // kRetrySteps later.
 void DemRun::insert_stage() {

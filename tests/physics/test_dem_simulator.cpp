@@ -120,8 +120,8 @@ TEST(DemSimulator, StaticBodiesPileAsAllDynamic) {
 // decided by the layer rule). Heavy grains land at once, light ones sink for
 // seconds: before the rule every static body was stepped all that while (the
 // stress catalogue's density-100:1 scene at 200 grains: 67 s against 9 s).
-// The light grains' fall is analytic here: simulated, they are dynamic bodies
-// all the way down, and nothing is ever still.
+// The light grains' fall is analytic here (the default): simulated, they
+// would be dynamic bodies all the way down, and nothing would ever be still.
 TEST(DemSimulator, StaticBodiesSleepWhileNothingMoves) {
   Scene s;
   s.window.width = 400;
@@ -203,15 +203,17 @@ TEST(DemSimulator, StatsSayWhereTheTimeWent) {
   EXPECT_DOUBLE_EQ(steps["per_grain"].get<double>(), double(all) / r.stats["grains"]["total"].get<double>());
 }
 
-// paper §7: the grains fall "as solid bodies" and collide while falling: a
-// grain is a body from its outlet down (in the water the fast classes catch
-// up with the slow ones; analytic, they never met: docs/dem.md). Analytic
-// down to 4 diameters above the pile, it is a body for only the last of its
-// fall. Either way the stats say how late grains became bodies.
+// paper §7: the grains fall "as solid bodies" and collide while falling: with
+// the whole fall simulated a grain is a body from its outlet down (in the
+// water the fast classes catch up with the slow ones; analytic, they never
+// meet: docs/dem.md). Analytic down to 4 diameters above the pile, the
+// default, it is a body for only the last of its fall. Either way the stats
+// say how late grains became bodies.
 TEST(DemSimulator, GrainsAreBodiesFromTheirOutletDown) {
   Scene s = small_dem_scene(60);
+  s.dem.insert_gap_diameters = 1e4;
   const RunResult fall = run(s);
-  s.dem.insert_gap_diameters = 4;
+  s.dem.insert_gap_diameters = 4;  // the default
   const RunResult analytic = run(s);
   for (const RunResult* r : {&fall, &analytic}) {
     EXPECT_EQ(r->stats["grains"]["in_picture"], r->stats["grains"]["total"]);
