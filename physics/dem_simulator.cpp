@@ -250,8 +250,9 @@ void DemRun::insert_stage() {
     dynamic_.push_back(id);
     crowding_.add(Vec2(x, y), r);  // in the way of the next arrivals of this step
     ++inserted_;
-    late_sum_ += t_ - due_[size_t(a.order)];
-    late_max_ = std::max(late_max_, t_ - due_[size_t(a.order)]);
+    const double late = t_ - due_[size_t(a.order)];
+    late_sum_ += late;
+    late_max_ = std::max(late_max_, late);
     energy_budget_ += mass_[k] * (0.5 * v.squaredNorm() + water_.gravity_px_s2[k] * y);
   }
   for (const Arrival& a : later) arrivals_.push(a);

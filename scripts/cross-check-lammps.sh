@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The Bullet DEM against LAMMPS on one scene: every engine (three-layer,
-# all-dynamic, three-layer with the whole fall simulated from the outlet as
-# LAMMPS simulates it: "fall", LAMMPS) at each friction and physics seed, then each
+# all-dynamic, three-layer with the whole fall simulated from the outlet, so
+# grains meet in the water as in LAMMPS: "fall", LAMMPS) at each friction and physics seed, then each
 # picture's scene slope and the silhouette errors between and within the
 # engines (each engine's own seed-to-seed floor). Two jobs at once (LAMMPS
 # on one core, Bullet on the other). Long: at --scale 0.1 about 30 minutes.
