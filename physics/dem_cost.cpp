@@ -42,7 +42,8 @@ Cost dem_cost(const Scene& s) {
   // slower on a 5.8x shorter step.
   Scene reference;
   reference.dem.water = s.dem.water;
-  double seconds = 2000 * std::pow(grains / 1e5, 1.75) * body_steps(s) / body_steps(reference);
+  const double steps_ratio = body_steps(s) / body_steps(reference);
+  double seconds = 2000 * std::pow(grains / 1e5, 1.75) * steps_ratio;
   // Bouncing grains rest later, and their speed makes the stiffness watch
   // sub-step: about 1/(1 − c·e), c = 0.84 from the stress catalogue's
   // quick scene (2,000 grains: 29.8 s at e = 1 against 5.1 s at e = 0, on
@@ -50,13 +51,19 @@ Cost dem_cost(const Scene& s) {
   const auto bounces = [](double e) { return 1 / (1 - 0.84 * std::clamp(e, 0.0, 1.0)); };
   seconds *= bounces(s.physics.restitution) / bounces(reference.physics.restitution);
   // The fits above are for a fall analytic until 4 diameters above the pile.
-  // Simulating it (dem.insert_gap_diameters past the drop from the region to
-  // the floor) took 1.7x and 1.5x the time and 1.7x and 1.4x the peak bodies
-  // at 3,500 and 14,000 grains; a part of it, in proportion.
-  double mean_d = 0;
-  for (int k = 0; k < kClasses; ++k) mean_d += grain_diameter_px(s, k) / kClasses;
-  const double drop = std::max(1.0, double(s.window.height - s.region.height));
-  const double fall = 1 + 0.5 * std::clamp(s.dem.insert_gap_diameters * mean_d / drop, 0.0, 1.0);
+  // A simulated fall adds its steps to each grain's residence (2,631 body-
+  // steps per grain at 14,000 grains, growing as n^0.75 with the fit): at
+  // --scale 0.2 the whole fall added 1,409 body-steps per grain and took
+  // 1.63x the time, as if every grain fell 0.4 of the drop from the region
+  // to the floor (outlets lie inside the region, piles rise to meet it).
+  const double dt = dem_time_step(s), drop = 0.4 * std::max(1.0, double(s.window.height - s.region.height));
+  const Water w = water_model(s);
+  double fall_steps = 0;
+  for (int k = 0; k < kClasses; ++k) {
+    const double v = std::max(w.terminal_px_s[k], 1e-9), analytic = std::min(drop, 4 * grain_diameter_px(s, k));
+    fall_steps += (std::min(drop, std::max(analytic, s.dem.simulated_fall_s * v)) - analytic) / v / dt / kClasses;
+  }
+  const double fall = 1 + fall_steps / (2631 * std::pow(grains / 14000, 0.75) * steps_ratio);
   return {bytes + 2048 * bodies * (fall - 1), seconds * fall};
 }
 

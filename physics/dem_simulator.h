@@ -1,5 +1,5 @@
 #pragma once
-// The DEM backend: every grain a Bullet rigid body once it nears the pile,
+// The DEM backend: every grain a Bullet rigid body from its outlet down,
 // made affordable by the paper's three-layer model (§7-8).
 #include <memory>
 

@@ -43,9 +43,9 @@ struct LammpsDeck {
 // Everything but the start of the grains' fall is the Bullet backend's:
 // release at dem.release_rate in falling order, Eq. 1-2 to the outlet
 // (src/release.h), then down at the class's settling speed. The Bullet
-// backend makes a grain a body a few diameters above the pile (or, with the
-// whole fall simulated, at its outlet, or above the pile where the pile has
-// reached the outlet); a deck written in advance cannot know the pile's
+// backend makes a grain a body at its outlet (or above the pile where the
+// pile has reached the outlet, or for only the last dem.simulated_fall_s of
+// a long fall); a deck written in advance cannot know the pile's
 // height, so each grain is created under the lid, early enough to
 // pass its outlet when the Bullet backend's grain would, and falls from
 // there. The pile does reach the lowest outlets (the default scene's bottom

@@ -197,7 +197,7 @@ struct Scene {
     double static_thickness_mm = 2;    // paper §8.1
     bool static_bodies = false;        // paper §8.1: static grains stay in the simulation (docs/dem.md)
     double static_reach_diameters = 0;  // and are bodies only this near the flow (largest diameters; 0: always)
-    double insert_gap_diameters = 4;   // flight is analytic until this far above the pile (1e4: none, from the outlet)
+    double simulated_fall_s = 20;      // paper §7: a body for this long before it lands (from its outlet at most)
     double max_overlap = 1.0;          // divergence: overlap beyond this (small-grain diameters)
     // Stiffness (physics/stiffness.h): an overlap past target_overlap
     // (small-grain diameters), or bodies twice as fast as settling, doubles

@@ -787,10 +787,12 @@ std::vector<Field> make_fields() {
       real("dem.static_reach_diameters", [](auto& s) -> auto& { return s.dem.static_reach_diameters; }, 0, 1e6,
            "with dem.static_bodies: a static grain is a body only while a dynamic grain is within this many "
            "largest-grain diameters, otherwise an immovable sphere: faster, steeper piles (0: no limit)"),
-      real("dem.insert_gap_diameters", [](auto& s) -> auto& { return s.dem.insert_gap_diameters; }, 0.5, 1e4,
-           "a falling grain becomes a body this far above the pile (diameters), never above its outlet; above, its "
-           "flight is analytic and grains never meet in the water (10000: the whole fall simulated, as paper §7 "
-           "has it, closer to LAMMPS's strata, 1.5x the time)"),
+      real("dem.simulated_fall_s", [](auto& s) -> auto& { return s.dem.simulated_fall_s; }, 0, 1e6,
+           "a falling grain is a body for the last this-many seconds of its fall (at its settling speed; at least its "
+           "last 4 diameters, never above its outlet), so grains meet in the water as paper §7 has it; above, its "
+           "flight is analytic. 20 simulates the default scene's whole fall at any --scale up to 1 (at full size its slowest "
+           "grains fall 690 px in 15 s); 0: analytic, faster, the slow classes of a burst landing after the fast "
+           "ones as a layer of their own"),
       real("dem.max_overlap", [](auto& s) -> auto& { return s.dem.max_overlap; }, 0.01, 10,
            "divergence: two grains overlapping by more than this (small-grain diameters) stop the run"),
       real("dem.target_overlap", [](auto& s) -> auto& { return s.dem.target_overlap; }, 0.001, 10,

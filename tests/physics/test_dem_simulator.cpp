@@ -120,7 +120,7 @@ TEST(DemSimulator, StaticBodiesPileAsAllDynamic) {
 // decided by the layer rule). Heavy grains land at once, light ones sink for
 // seconds: before the rule every static body was stepped all that while (the
 // stress catalogue's density-100:1 scene at 200 grains: 67 s against 9 s).
-// The light grains' fall is analytic here (the default): simulated, they
+// The light grains' fall is analytic here (not the default): simulated, they
 // would be dynamic bodies all the way down, and nothing would ever be still.
 TEST(DemSimulator, StaticBodiesSleepWhileNothingMoves) {
   Scene s;
@@ -130,7 +130,7 @@ TEST(DemSimulator, StaticBodiesSleepWhileNothingMoves) {
   s.grains.density_g_cm3 = {1.05, 1.05, 100, 100};
   s.mode = Mode::Dem;
   s.dem.static_bodies = true;
-  s.dem.insert_gap_diameters = 4;
+  s.dem.simulated_fall_s = 0;
   RunResult r = run(s);
   EXPECT_EQ(r.stats["grains"]["in_picture"], r.stats["grains"]["total"]);
   EXPECT_GT(r.stats["backend"]["static_sleeps"].get<int64_t>(), 0);
@@ -203,30 +203,32 @@ TEST(DemSimulator, StatsSayWhereTheTimeWent) {
   EXPECT_DOUBLE_EQ(steps["per_grain"].get<double>(), double(all) / r.stats["grains"]["total"].get<double>());
 }
 
-// paper §7: the grains fall "as solid bodies" and collide while falling: with
-// the whole fall simulated a grain is a body from its outlet down (in the
-// water the fast classes catch up with the slow ones; analytic, they never
-// meet: docs/dem.md). Analytic down to 4 diameters above the pile, the
-// default, it is a body for only the last of its fall. Either way the stats
-// say how late grains became bodies.
+// paper §7: the grains fall "as solid bodies" and collide while falling: by
+// default a grain is a body from its outlet down (in the water the fast
+// classes catch up with the slow ones; analytic, they never meet:
+// docs/dem.md). dem.simulated_fall_s bounds the simulated part of the fall
+// (grains that sink for minutes), 0 leaves only the last 4 diameters. Either
+// way the stats say how late grains became bodies.
 TEST(DemSimulator, GrainsAreBodiesFromTheirOutletDown) {
   Scene s = small_dem_scene(60);
-  s.dem.insert_gap_diameters = 1e4;
   const RunResult fall = run(s);
-  s.dem.insert_gap_diameters = 4;  // the default
+  s.dem.simulated_fall_s = 0.1;  // the last 17 px of a large grain's fall, 4.5 px of a small one's
+  const RunResult bounded = run(s);
+  s.dem.simulated_fall_s = 0;
   const RunResult analytic = run(s);
-  for (const RunResult* r : {&fall, &analytic}) {
+  for (const RunResult* r : {&fall, &bounded, &analytic}) {
     EXPECT_EQ(r->stats["grains"]["in_picture"], r->stats["grains"]["total"]);
     const auto& b = r->stats["backend"];
     EXPECT_GE(b["insertions_late_mean_s"].get<double>(), 0);
     EXPECT_GE(b["insertions_late_max_s"].get<double>(), b["insertions_late_mean_s"].get<double>());
   }
-  const double per_grain_fall = fall.stats["backend"]["body_steps"]["per_grain"].get<double>();
-  const double per_grain_analytic = analytic.stats["backend"]["body_steps"]["per_grain"].get<double>();
+  const auto per_grain = [](const RunResult& r) { return r.stats["backend"]["body_steps"]["per_grain"].get<double>(); };
   // The drop from the outlet, 85 px over the floor, is 75-150 diameters
   // (0.55-1.1 px grains); the analytic fall leaves the last 4 and the rest
   // on the pile (12x measured).
-  EXPECT_GT(per_grain_fall, 4 * per_grain_analytic);
+  EXPECT_GT(per_grain(fall), 4 * per_grain(analytic));
+  EXPECT_GT(per_grain(bounded), 1.5 * per_grain(analytic));
+  EXPECT_LT(per_grain(bounded), per_grain(fall) / 1.5);
 }
 
 // paper Fig. 14c-d: the DEM's frames, from the full region to the picture,
