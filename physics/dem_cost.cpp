@@ -61,7 +61,7 @@ Cost dem_cost(const Scene& s) {
   double fall_steps = 0;
   for (int k = 0; k < kClasses; ++k) {
     const double v = std::max(w.terminal_px_s[k], 1e-9), analytic = std::min(drop, 4 * grain_diameter_px(s, k));
-    fall_steps += (std::min(drop, std::max(analytic, s.dem.simulated_fall_s * v)) - analytic) / v / dt / kClasses;
+    fall_steps += (std::min(drop, simulated_fall_px(s, k, v)) - analytic) / v / dt / kClasses;
   }
   const double fall = 1 + fall_steps / (2631 * std::pow(grains / 14000, 0.75) * steps_ratio);
   return {bytes + 2048 * bodies * (fall - 1), seconds * fall};

@@ -14,6 +14,10 @@ std::array<double, kClasses> dem_radii(const Scene& s) {
   return r;
 }
 
+double simulated_fall_px(const Scene& s, int k, double terminal_px_s) {
+  return std::max(4 * grain_diameter_px(s, k), s.dem.simulated_fall_s * terminal_px_s);
+}
+
 namespace {
 
 // A run without grains steps and weighs as if every class were there.

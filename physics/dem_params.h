@@ -18,6 +18,13 @@ constexpr ClassSet kAllClasses{true, true, true, true};
 // the smallest present class's diameters per step.
 double dem_time_step(const Scene& s, const ClassSet& present = kAllClasses);
 
+// paper §7: how far above the pile (px) a grain of class k, settling at
+// terminal_px_s, becomes a body: its last dem.simulated_fall_s of fall, at
+// least its last 4 diameters (it lands at its settling speed, not created
+// in contact; 4 was the analytic fall's gap, which dem_cost's fits are
+// for). The run caps it at the grain's outlet.
+double simulated_fall_px(const Scene& s, int k, double terminal_px_s);
+
 // Bullet's radius (px) and mass of each class. Masses are scaled so that a
 // grain's weight per step stays far below 1 (see dem_masses in the .cpp).
 std::array<double, kClasses> dem_radii(const Scene& s);

@@ -44,11 +44,6 @@ constexpr double kUnsettled = 0.002;
 // (the grain in the way needs about 40 to clear it); retrying every step
 // cost 8% of the run in the neighbourhood checks.
 constexpr int kRetrySteps = 8;
-// A grain is a body at least this many of its diameters above the pile,
-// whatever dem.simulated_fall_s: it lands at its settling speed, not
-// created in contact (and 4 was the analytic fall's gap, whose speed fits
-// physics/dem_cost.cpp are for).
-constexpr double kAnalyticGap = 4;
 
 // The stages a run's time is reported by (stats: stages_s).
 enum Stage : size_t { kRelease, kInsert, kWater, kBulletStep, kFrame, kClassify, kFreeze, kWake, kGuard, kRunOn, kStages };
@@ -199,17 +194,15 @@ double DemRun::surface(double x, double r) const {
   return h;
 }
 
-// Where a grain of class k falling at x becomes a body: dem.simulated_fall_s
-// of its fall above the pile at its settling speed (at least kAnalyticGap
-// diameters), but never above its outlet, where its fall begins (paper §7:
+// Where a grain of class k falling at x becomes a body: simulated_fall_px
+// above the pile (dem_params.h), but never above its outlet, where its fall begins (paper §7:
 // the grains fall "as solid bodies" and collide while falling; none of the
 // fall is simulated twice). Above a pile that has reached the outlet, its
 // centre a diameter above the pile.
 double DemRun::insert_height(double x, int k, const Outlet& o) const {
   const double r = radius_[k], below = surface(x, r);
-  const double gap = std::max(kAnalyticGap * 2 * r, s_.dem.simulated_fall_s * water_.terminal_px_s[k]);
   const double outlet_up = std::max(H_ - o.centre.y(), below + 2 * r);
-  return std::min({below + gap, outlet_up, H_ - r});
+  return std::min({below + simulated_fall_px(s_, k, water_.terminal_px_s[k]), outlet_up, H_ - r});
 }
 
 // Stage: grains leave their units at dem.release_rate in falling order and
