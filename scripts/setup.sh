@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-PACKAGES=(g++ cmake make pkgconf libeigen3-dev libopencv-dev libtbb-dev libbullet-dev libcpp-httplib-dev
+PACKAGES=(g++ cmake make pkgconf libeigen3-dev libopencv-dev libpng-dev libtbb-dev libbullet-dev libcpp-httplib-dev
           libgtest-dev libcli11-dev nlohmann-json3-dev
           lammps openmpi-bin)  # --mode lammps runs LAMMPS's lmp (GRANULAR), on more ranks under mpirun
 TESTS=0

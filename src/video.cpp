@@ -1,10 +1,6 @@
 #include "src/video.h"
 
-#include <dlfcn.h>
-
-#include <filesystem>
-
-#include "src/errors.h"
+#include "src/plugin.h"
 
 namespace sandpic {
 
@@ -16,30 +12,15 @@ struct Plugin {
   void (*close)(void*) = nullptr;
 };
 
-// Beside the executable first (a copied build), then where this build put it
-// (the test binaries live in a sub-folder).
 const Plugin& plugin() {
   static const Plugin p = [] {
-    const std::string name = "libsandpic_video.so";
-    std::string tried, why;
-    std::error_code ec;
-    const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    const std::string beside = ec ? std::string() : (exe.parent_path() / name).string();
-    for (const std::string& path : {beside, std::string(SANDPIC_VIDEO_PLUGIN)}) {
-      if (path.empty() || tried.find(path) != std::string::npos) continue;
-      if (void* h = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL)) {
-        Plugin q;
-        q.open = reinterpret_cast<decltype(q.open)>(dlsym(h, "sandpic_video_open"));
-        q.write = reinterpret_cast<decltype(q.write)>(dlsym(h, "sandpic_video_write"));
-        q.close = reinterpret_cast<decltype(q.close)>(dlsym(h, "sandpic_video_close"));
-        if (q.open && q.write && q.close) return q;
-        why = path + " lacks the sandpic_video_* functions";
-      } else {
-        why = dlerror();
-      }
-      tried += (tried.empty() ? "" : ", ") + path;
-    }
-    throw InputError("cannot load the video encoder " + name + " (tried " + tried + "): " + why);
+    const auto f = load_plugin("libsandpic_video.so", SANDPIC_VIDEO_PLUGIN, "the video encoder",
+                               {"sandpic_video_open", "sandpic_video_write", "sandpic_video_close"});
+    Plugin q;
+    q.open = reinterpret_cast<decltype(q.open)>(f[0]);
+    q.write = reinterpret_cast<decltype(q.write)>(f[1]);
+    q.close = reinterpret_cast<decltype(q.close)>(f[2]);
+    return q;
   }();
   return p;
 }

@@ -12,7 +12,6 @@
 
 #include <CLI/CLI.hpp>
 #include <opencv2/core/utils/logger.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <tbb/global_control.h>
 
 #include "src/cli/backends.h"
@@ -21,6 +20,7 @@
 #include "src/cli/frame_output.h"
 #include "src/errors.h"
 #include "src/grain_table.h"
+#include "src/image_io.h"
 #include "src/output.h"
 #include "src/pipeline.h"
 #include "src/init/init.h"
@@ -37,8 +37,7 @@
 namespace sandpic {
 
 void write_png(const std::string& path, const cv::Mat& img) {
-  std::vector<uchar> png;
-  if (!cv::imencode(".png", img, png)) throw SimulationError("PNG encoding failed for " + path);
+  const std::vector<uchar> png = encode_png(img);
   write_atomic(path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 

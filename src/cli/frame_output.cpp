@@ -7,9 +7,9 @@
 #include <regex>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 
 #include "src/errors.h"
+#include "src/image_io.h"
 #include "src/output.h"
 
 namespace sandpic {
@@ -91,8 +91,7 @@ FrameOutput::~FrameOutput() {
 
 void FrameOutput::write(const cv::Mat& picture) {
   if (!tmp_dir_.empty()) {
-    std::vector<uchar> png;
-    if (!cv::imencode(".png", picture, png)) throw SimulationError("PNG encoding failed for a frame");
+    const std::vector<uchar> png = encode_png(picture);
     write_atomic(tmp_dir_ + "/" + frame_name(written_), std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
   }
   writer_.write(picture);

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <filesystem>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "src/errors.h"
+#include "src/image_io.h"
 #include "src/init/init.h"
 
 namespace sandpic {
@@ -26,8 +26,11 @@ cv::Mat read_image(const std::string& path, const std::string& key) {
   int saved = dup(STDERR_FILENO), null = open("/dev/null", O_WRONLY);
   if (null >= 0) dup2(null, STDERR_FILENO);
   try {
-    img = cv::imread(path, cv::IMREAD_COLOR);  // 16-bit, grey and alpha become 8-bit BGR
-  } catch (const cv::Exception&) {
+    img = read_picture(path);  // 16-bit, grey and alpha become 8-bit BGR
+  } catch (...) {
+    if (saved >= 0) dup2(saved, STDERR_FILENO), close(saved);
+    if (null >= 0) close(null);
+    throw;
   }
   if (saved >= 0) dup2(saved, STDERR_FILENO), close(saved);
   if (null >= 0) close(null);

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <random>
 
-#include <opencv2/imgcodecs.hpp>
 
+#include "src/image_io.h"
 #include "src/output.h"
 #include "src/pipeline.h"
 #include "src/video.h"
@@ -87,9 +87,8 @@ Reply animation(const std::string& body, const std::string& root, const Animatio
   // JPEG: a frame is seen for a twelfth of a second, and at 1000 x 700 it
   // is a fifth of the PNG's bytes and encodes in a few milliseconds.
   std::string sizes;
-  std::vector<uchar> buf;
   for (const cv::Mat& f : frames) {
-    cv::imencode(".jpg", f, buf, {cv::IMWRITE_JPEG_QUALITY, 85});
+    const std::vector<uchar> buf = encode_jpeg(f, 85);
     r.body.append(reinterpret_cast<const char*>(buf.data()), buf.size());
     if (!sizes.empty()) sizes += ',';
     sizes += std::to_string(buf.size());

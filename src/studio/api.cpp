@@ -2,8 +2,8 @@
 
 #include <filesystem>
 
-#include <opencv2/imgcodecs.hpp>
 
+#include "src/image_io.h"
 #include "src/init/init.h"
 #include "src/output.h"
 #include "src/pipeline.h"
@@ -121,17 +121,12 @@ Reply upload_image(const std::string& bytes, const std::string& root) {
   if (bytes.size() > kMaxImageBytes)
     throw TooLarge("image of " + std::to_string(bytes.size()) + " bytes is over the limit of " +
                    std::to_string(kMaxImageBytes));
-  cv::Mat img;
-  try {
-    img = cv::imdecode(cv::Mat(1, int(bytes.size()), CV_8U, const_cast<char*>(bytes.data())), cv::IMREAD_COLOR);
-  } catch (const cv::Exception&) {
-  }
+  const cv::Mat img = decode_picture(bytes.data(), bytes.size());
   if (img.empty()) throw InputError("image: not a picture OpenCV can read (PNG, JPEG, BMP, TIFF, WebP, ...)");
   if (double(img.total()) > kMaxImagePixels)
     throw InputError("image: " + std::to_string(img.cols) + " x " + std::to_string(img.rows) +
                      " px is over the limit of 50 megapixels; the region is a few hundred px high");
-  std::vector<uchar> png;
-  cv::imencode(".png", img, png);
+  const std::vector<uchar> png = encode_png(img);
   // FNV-1a of the picture: its name, so a picture dropped again is the same file.
   uint64_t h = 1469598103934665603ull;
   for (uchar b : png) h = (h ^ b) * 1099511628211ull;

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include <opencv2/imgcodecs.hpp>
 
+#include "src/image_io.h"
 #include "validate/dem/verify_dem.h"
 #include "validate/report/report_html.h"
 
@@ -118,8 +118,8 @@ std::string verify_html(const VerifyReport& r) {
     if (!c.pictures.empty()) {
       h += "<div class=\"pics\">";
       for (const auto& [caption, img] : c.pictures) {
-        std::vector<unsigned char> png;
-        if (img.empty() || !cv::imencode(".png", img, png)) continue;
+        if (img.empty()) continue;
+        const std::vector<uchar> png = encode_png(img);
         h += "<figure><img alt=\"" + html_escape(caption) + "\" src=\"data:image/png;base64," + base64(png) + "\"><figcaption>" +
              html_escape(caption) + "</figcaption></figure>";
       }

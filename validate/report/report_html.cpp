@@ -1,10 +1,11 @@
 #include "validate/report/report_html.h"
 
+#include "src/image_io.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include <opencv2/imgcodecs.hpp>
 
 namespace sandpic {
 
@@ -33,9 +34,8 @@ namespace {
 
 
 std::string png_uri(const cv::Mat& img) {
-  std::vector<unsigned char> png;
-  if (img.empty() || !cv::imencode(".png", img, png)) return "";
-  return "data:image/png;base64," + base64(png);
+  if (img.empty()) return "";
+  return "data:image/png;base64," + base64(encode_png(img));
 }
 
 struct Point {

@@ -1,7 +1,6 @@
 #include "validate/runs/kept_runs.h"
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "src/image_io.h"
 #include "src/output.h"
 #include "src/scene_file.h"
 
@@ -23,9 +22,9 @@ std::optional<KeptRun> load_kept(const std::string& dir, const std::string& labe
     return std::nullopt;
   }
   const cv::Size window(s.window.width, s.window.height);
-  r.picture = cv::imread(base + ".png", cv::IMREAD_COLOR);
+  r.picture = read_picture(base + ".png");
   if (r.picture.empty() || r.picture.size() != window) return std::nullopt;
-  r.class_map = cv::imread(base + ".classes.png", cv::IMREAD_GRAYSCALE);
+  r.class_map = read_picture(base + ".classes.png", ImageRead::Grey);
   if (!r.class_map.empty() && r.class_map.size() != window) r.class_map.release();
   return r;
 }
@@ -33,8 +32,7 @@ std::optional<KeptRun> load_kept(const std::string& dir, const std::string& labe
 void keep_run(const std::string& dir, const std::string& label, const RunResult& r) {
   const std::string base = dir + "/" + label;
   auto bytes = [](const std::vector<uchar>& v) { return std::string_view(reinterpret_cast<const char*>(v.data()), v.size()); };
-  std::vector<uchar> classes;
-  cv::imencode(".png", r.class_map, classes);
+  const std::vector<uchar> classes = encode_png(r.class_map);
   write_atomic(base + ".png", bytes(r.png));
   write_atomic(base + ".classes.png", bytes(classes));
   // The stats last: a run counts as kept only once its pictures are.

@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <mutex>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <tbb/parallel_for.h>
 

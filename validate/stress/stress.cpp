@@ -18,9 +18,9 @@
 #include <sstream>
 #include <thread>
 
-#include <opencv2/imgcodecs.hpp>
 
 #include "src/errors.h"
+#include "src/image_io.h"
 #include "src/output.h"
 #include "src/scene_file.h"
 
@@ -122,7 +122,8 @@ cv::Mat gradient(int w, int h, int type) {
 }
 
 void write_image(const std::string& path, const cv::Mat& img) {
-  if (!cv::imwrite(path, img)) throw SimulationError("stress: cannot write " + path);
+  const std::vector<uchar> png = encode_picture(".png", img);
+  write_atomic(path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 
 }  // namespace
@@ -237,8 +238,7 @@ std::vector<StressCase> stress_cases(bool quick) {
                           [W, R](const std::string& p) { write_image(p, gradient(7 * W, std::max(1, R / 3), CV_8UC3)); },
                           quick));
   cs.push_back(image_case("image-corrupt", "init.image a PNG cut after its header", [](const std::string& p) {
-    std::vector<uchar> png;
-    cv::imencode(".png", gradient(64, 64, CV_8UC3), png);
+    const std::vector<uchar> png = encode_png(gradient(64, 64, CV_8UC3));
     write_atomic(p, std::string_view(reinterpret_cast<const char*>(png.data()), 40));
   }, quick, kError));
   cs.push_back(image_case("image-missing", "init.image names no file", nullptr, quick, kError));
@@ -339,7 +339,7 @@ StressRow judge(const StressCase& c, const std::string& mode, const ChildRun& ru
       return fail("exit 0 with unreadable stats");
     }
     if (!all_finite(st)) return fail("a NaN or infinity in the stats");
-    const cv::Mat pic = cv::imread(f.picture, cv::IMREAD_UNCHANGED);
+    const cv::Mat pic = read_picture(f.picture, ImageRead::Unchanged);
     if (pic.empty()) return fail("exit 0 without a readable picture");
     if (pic.cols != st["window"][0].get<int>() || pic.rows != st["window"][1].get<int>())
       return fail("the picture is not the window's size");

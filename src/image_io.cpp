@@ -1,0 +1,99 @@
+#include "src/image_io.h"
+
+#include <png.h>
+#include <zlib.h>
+
+#include "src/errors.h"
+#include "src/plugin.h"
+
+namespace sandpic {
+
+namespace {
+
+void append(png_structp png, png_bytep data, png_size_t n) {
+  auto* out = static_cast<std::vector<uchar>*>(png_get_io_ptr(png));
+  out->insert(out->end(), data, data + n);
+}
+void flush(png_structp) {}
+
+// No C++ object lives in this frame: libpng leaves it by longjmp on error.
+bool write_png(png_structp png, png_infop info, const cv::Mat* img, png_bytepp rows, std::vector<uchar>* out) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_set_write_fn(png, out, append, flush);
+  // OpenCV 4.6's PngEncoder without parameters: "tune parameters for speed".
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+  png_set_compression_level(png, Z_BEST_SPEED);
+  png_set_compression_strategy(png, Z_RLE);
+  const int cn = img->channels();
+  png_set_IHDR(png, info, png_uint_32(img->cols), png_uint_32(img->rows), 8,
+               cn == 1 ? PNG_COLOR_TYPE_GRAY : cn == 3 ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  png_set_bgr(png);
+  png_write_image(png, rows);
+  png_write_end(png, info);
+  return true;
+}
+
+struct Plugin {
+  bool (*read)(const char*, int, cv::Mat*) = nullptr;
+  bool (*decode)(const void*, size_t, int, cv::Mat*) = nullptr;
+  bool (*encode)(const char*, const cv::Mat*, int, std::vector<uchar>*) = nullptr;
+};
+
+const Plugin& plugin() {
+  static const Plugin p = [] {
+    const auto f = load_plugin("libsandpic_image.so", SANDPIC_IMAGE_PLUGIN, "the picture decoder",
+                               {"sandpic_image_read", "sandpic_image_decode", "sandpic_image_encode"});
+    Plugin q;
+    q.read = reinterpret_cast<decltype(q.read)>(f[0]);
+    q.decode = reinterpret_cast<decltype(q.decode)>(f[1]);
+    q.encode = reinterpret_cast<decltype(q.encode)>(f[2]);
+    return q;
+  }();
+  return p;
+}
+
+}  // namespace
+
+std::vector<uchar> encode_png(const cv::Mat& img) {
+  const int cn = img.channels();
+  if (img.empty() || img.depth() != CV_8U || (cn != 1 && cn != 3 && cn != 4))
+    throw SimulationError("PNG encoding failed: " + std::to_string(img.cols) + " x " + std::to_string(img.rows) +
+                          " picture of type " + std::to_string(img.type()) + " is not 8-bit grey, BGR or BGRA");
+  std::vector<png_bytep> rows(size_t(img.rows));
+  for (int y = 0; y < img.rows; ++y) rows[size_t(y)] = const_cast<png_bytep>(img.ptr<uchar>(y));
+  std::vector<uchar> out;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  const bool ok = info && write_png(png, info, &img, rows.data(), &out);
+  png_destroy_write_struct(&png, &info);
+  if (!ok) throw SimulationError("PNG encoding failed (libpng)");
+  return out;
+}
+
+cv::Mat read_picture(const std::string& path, ImageRead how) {
+  cv::Mat out;
+  plugin().read(path.c_str(), int(how), &out);
+  return out;
+}
+
+cv::Mat decode_picture(const void* data, size_t size, ImageRead how) {
+  cv::Mat out;
+  plugin().decode(data, size, int(how), &out);
+  return out;
+}
+
+std::vector<uchar> encode_jpeg(const cv::Mat& bgr, int quality) {
+  std::vector<uchar> out;
+  if (!plugin().encode(".jpg", &bgr, quality, &out)) throw SimulationError("JPEG encoding failed");
+  return out;
+}
+
+std::vector<uchar> encode_picture(const std::string& ext, const cv::Mat& img) {
+  std::vector<uchar> out;
+  if (!plugin().encode(ext.c_str(), &img, -1, &out)) throw SimulationError("cannot encode a picture as " + ext);
+  return out;
+}
+
+}  // namespace sandpic
