@@ -63,7 +63,7 @@ void emit_frame(const SimInput& in, const HeightField& field, int64_t landed, in
 
 class LatticeSimulator final : public Simulator {
  public:
-  // Measured (issue 6): the default scene at --scale 1 to 3 (0.35 to 3.15
+  // Measured: the default scene at --scale 1 to 3 (0.35 to 3.15
   // million grains) takes 0.43 µs a grain to settle; the pile keeps about
   // 8 bytes a grain beside the pipeline's own arrays.
   Cost cost(const Scene& s) const override {

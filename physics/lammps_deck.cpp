@@ -33,7 +33,8 @@ constexpr double kPoisson = 0.3;
 // a LAMMPS `run`, whose set-up costs a pass over the atoms.
 constexpr double kBatchS = 0.002;
 // The pile is settled when no grain moves faster than this many small-grain
-// diameters a second (the Bullet backend: 0.25 px over 25 cycles).
+// diameters a second (the Bullet backend waits until its grains hold,
+// physics/holds.h: 0.05 diameters in 1 s).
 constexpr double kSettleDiametersPerS = 0.5;
 // A grain is created at least this many small radii clear of where the
 // grains already falling would be if they fell straight: in a dense stream

@@ -10,7 +10,7 @@
 
 namespace sandpic {
 
-// Measured (issue 6) with the lattice on the default scene at --scale 1 to
+// Measured with the lattice on the default scene at --scale 1 to
 // 3: 88 MB at 0.35 million grains, 184 MB at 3.15 million. The process
 // with its libraries takes ~75 MB; the pipeline keeps ~12 bytes a grain
 // (class, unit, order, settled position) and ~8 bytes a pixel of the window

@@ -1,7 +1,7 @@
 #pragma once
 // What a run will take, from the scene alone, and the limits it must stay
 // under: a scene past them is refused with the figure before anything is
-// allocated (issue 6), instead of failing half-way or taking the machine.
+// allocated, instead of failing half-way or taking the machine.
 #include <cstdint>
 #include <limits>
 #include <string>

@@ -112,9 +112,9 @@ void write_png(const std::string& path, const cv::Mat& img);
 std::unique_ptr<tbb::global_control> limit_threads(int n);
 // sandpic validate and sandpic calibrate; the returned object owns them.
 std::shared_ptr<void> add_validation_commands(CLI::App& app);
-// sandpic stress (issue 6).
+// sandpic stress.
 std::shared_ptr<void> add_stress_command(CLI::App& app);
-// sandpic studio (issue 7).
+// sandpic studio.
 std::shared_ptr<void> add_studio_command(CLI::App& app);
 // sandpic verify-dem (src/cli/verify_command.cpp).
 std::shared_ptr<void> add_verify_command(CLI::App& app);

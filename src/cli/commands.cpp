@@ -353,7 +353,7 @@ struct BenchFrictionCommand {
 
 }  // namespace
 
-// Issue 4: how alike two pictures are, on luminance and on the pile.
+// How alike two pictures are, on luminance and on the pile.
 struct CompareCommand {
   std::string a, b, scene_path, diff_path;
   std::vector<std::string> tolerances;
@@ -482,7 +482,7 @@ struct CompareCommand {
   }
 };
 
-// Issue 4: two runs of one scene grain by grain (render --grains): how far
+// Two runs of one scene grain by grain (render --grains): how far
 // each class travels from where its fall started, how wide a unit spreads,
 // and, for runs with the same physics seed, how far apart each grain rests.
 struct CompareGrainsCommand {

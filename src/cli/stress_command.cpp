@@ -1,4 +1,4 @@
-// Issue 6: sandpic stress, the catalogue of stiff and extreme scenes run in
+// sandpic stress, the catalogue of stiff and extreme scenes run in
 // both modes, as a table in Markdown and JSON.
 #include <cstdio>
 #include <filesystem>

@@ -1,4 +1,4 @@
-// Issue 7: sandpic studio, the scene designer's local web page.
+// sandpic studio, the scene designer's local web page.
 #include <cstdio>
 
 #include "src/cli/cli_common.h"

@@ -1,4 +1,4 @@
-// Issue 4: sandpic validate (lattice against the DEM and its noise floor)
+// sandpic validate (lattice against the DEM and its noise floor)
 // and sandpic calibrate (the lattice fitted to DEM piles).
 #include <cstdio>
 #include <filesystem>

@@ -23,7 +23,7 @@ struct VerifyCommand {
   void add_to(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "verify-dem", "check the DEM against closed-form answers and itself; writes report.json and report.html");
-    cmd->add_flag("--quick", quick, "piles of a few hundred grains, looser tolerances (about 3.5 minutes on 2 cores; ctest runs it)");
+    cmd->add_flag("--quick", quick, "piles of a few hundred grains, looser tolerances (about 7.5 minutes on 2 cores; ctest runs it)");
     cmd->add_option("--out", out, "folder for report.json and report.html")->required();
     cmd->add_option("--only", only, "case ids, comma-separated (settling, restitution, incline, rolling, notch, heap, "
                                     "creep, layers, step, engines)");

@@ -1,6 +1,6 @@
 #pragma once
 // The studio's requests as plain functions: request body in, reply out, no
-// HTTP (issue 7). Everything the page sends is read as a scene file is
+// HTTP. Everything the page sends is read as a scene file is
 // (scene_from_text, apply_json, validate), so a bad value gets the same
 // message, naming the same key, as on the command line.
 #include <cstddef>

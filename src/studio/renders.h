@@ -1,5 +1,5 @@
 #pragma once
-// The studio's final renders (issue 7): the DEM in the background, one at a
+// The studio's final renders: the DEM in the background, one at a
 // time, on one thread, so the live preview keeps the other core. A finished
 // render is never lost: its picture, scene and stats go to `dir` (written
 // atomically) before it is reported done.

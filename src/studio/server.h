@@ -1,5 +1,5 @@
 #pragma once
-// sandpic studio (issue 7): a local web page to design a scene, with a live
+// sandpic studio: a local web page to design a scene, with a live
 // lattice preview and final DEM renders in the background. The page ships
 // inside the binary (page/, embedded by CMake); nothing is fetched.
 #include <memory>

@@ -72,7 +72,7 @@ one_line; err_has "f16a.png"; err_has "--scene"
 expect 0 "compare with the scene" -- "$BIN" compare "$T/f16a.png" "$T/f16b.png" --scene "$ROOT/examples/fig16.json" --json
 if grep -q '"silhouette_error": 0.0,' "$T/out"; then bad "fig16 silhouette error 0: $(cat "$T/out")"; else ok; fi
 
-# Issue 4: every grain's release point and resting place as CSV, and two
+# Every grain's release point and resting place as CSV, and two
 # runs compared grain by grain; bad tables and paths are named, nothing written.
 expect 0 "render grains" -- "$BIN" render -o "$T/g1.png" --scale 0.25 --grains "$T/g1.csv"
 if [ "$(head -1 "$T/g1.csv")" = "id,class,unit,order,release_x,x,y" ] && [ "$(wc -l <"$T/g1.csv")" = 22001 ]; then ok
@@ -221,7 +221,7 @@ if [ "$BULLET" = with-bullet ]; then
   if [ "$(wc -l <"$T/fig9.csv")" = 3 ] && grep -q "three: the mean angle" "$T/out"; then ok; else bad "bench-friction: $(cat "$T/out")"; fi
   expect 2 "bench-friction bad friction" -- "$BIN" bench-friction --friction 0.4,abc --csv "$T/f.csv"
   one_line; err_has "--friction"; absent "$T/f.csv"
-  # Issue 4: calibrate writes a file a scene names; validate refuses a thin noise floor.
+  # calibrate writes a file a scene names; validate refuses a thin noise floor.
   expect 0 "calibrate" -- "$BIN" calibrate "${TINY[@]}" --grains 300 --scenes 1 --out "$T/cal.json"
   if grep -q '"repose_deg"' "$T/cal.json" && grep -q '"bulk"' "$T/cal.json"; then ok; else bad "cal.json: $(cat "$T/cal.json")"; fi
   expect 0 "render calibrated" -- "$BIN" render "${TINY[@]}" --set lattice.calibration="$T/cal.json" -o "$T/cal.png" --stats "$T/cal-stats.json"
@@ -304,7 +304,7 @@ expect 2 "sketch picture missing" -- "$BIN" render -o "$T/nc.png" --set segment.
   "segment.sketch.image=\"$T/nothing.png\""
 one_line; err_has "segment.sketch.image"; absent "$T/nc.png"
 
-# Issue 6: a scene past the memory or time limit is refused before it starts.
+# A scene past the memory or time limit is refused before it starts.
 expect 2 "memory limit" -- "$BIN" render -o "$T/keep.png" --max-memory-gb 0.05
 one_line; err_has "--max-memory-gb"; err_has "350000 grains"
 if [ "$(cat "$T/keep.png")" = keep ]; then ok; else bad "a refused scene overwrote the output"; fi
@@ -316,7 +316,7 @@ printf '{"physics": {"friction": 1e999}}\n' >"$T/huge.json"
 expect 2 "number past a double" -- "$BIN" render "$T/huge.json" -o "$T/e.png"
 one_line; err_has "physics.friction"; err_has "line 1"; absent "$T/e.png"
 
-# Issue 6: the stress catalogue, a few cases of each kind (the whole quick
+# The stress catalogue, a few cases of each kind (the whole quick
 # catalogue is a test of its own).
 expect 0 "stress" -- "$BIN" stress --quick --out "$T/stress" --only json-nan,image-16bit,region-1px
 for f in stress.md stress.json; do if [ -s "$T/stress/$f" ]; then ok; else bad "stress wrote no $f"; fi; done
@@ -330,7 +330,7 @@ expect 2 "figure mask missing" -- "$BIN" render -o "$T/fg.png" --set \
   "render.figures=[{\"mask\": \"$T/nothing.png\"}]"
 one_line; err_has "render.figures\[0\].mask"; absent "$T/fg.png"
 
-# Issue 7: sandpic studio. A bad starting scene is refused before it listens;
+# sandpic studio. A bad starting scene is refused before it listens;
 # a good one prints its loopback address and serves the page there.
 printf '{"physics": {"friction": -1}}\n' >"$T/bad-studio.json"
 expect 2 "studio bad scene" -- "$BIN" studio "$T/bad-studio.json" --port 0

@@ -1,4 +1,4 @@
-// Issue 7: the preview round trip of sandpic studio, measured in the page
+// The preview round trip of sandpic studio, measured in the page
 // (performance.now() in headless Chromium): from a control change (an input
 // event on colour C1, a new colour each time) to the new preview decoded and
 // on screen (#preview's data-seq set once img.decode() resolved, then the

@@ -1,4 +1,4 @@
-// Issue 7: sandpic studio's page end to end, as a user drives it, in
+// sandpic studio's page end to end, as a user drives it, in
 // Debian's headless Chromium: the first preview; a colour, a flip, a sketch
 // drawn with the mouse and a cell painted each redraw it; a final DEM render
 // runs to the end and downloads as a PNG of the scaled size, and another is

@@ -1,4 +1,4 @@
-// libFuzzer target for the scene parser (issue 6): the input's bytes are a
+// libFuzzer target for the scene parser: the input's bytes are a
 // scene file's text, taken through what `sandpic render SCENE.json` does with
 // it before any image is read: parse and apply (load_scene without the file),
 // validate, every area's scene, then --scale 0.5. Refusals a user sees as

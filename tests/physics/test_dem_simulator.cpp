@@ -50,6 +50,12 @@ TEST(DemSimulator, EveryGrainSettlesInThePictureInEveryLayerModel) {
     if (l == Layers::AllDynamic) {
       EXPECT_EQ(last["dynamic"], r.stats["grains"]["total"]);
     }
+    // The run ended because the picture held, not because it gave up
+    // waiting (physics/outline_watch.h).
+    const auto& settling = r.stats["backend"]["settling"];
+    EXPECT_TRUE(settling["outline_held"].get<bool>()) << int(l);
+    EXPECT_EQ(settling["moving_columns"].get<int64_t>(), 0) << int(l);
+    EXPECT_GE(settling["after_last_arrival_s"].get<double>(), 0) << int(l);
   }
 }
 
@@ -159,7 +165,7 @@ TEST(DemSimulator, BcreStaticLayerKeepsContactsConverged) {
 // The default settings: a grain becomes static only where the static layer
 // under it is gentler than α, so grains held on a steeper slope are still
 // bodies at the end, and the run ends when every body has rested.
-TEST(DemSimulator, DefaultSettingsEndWithEveryBodyAtRest) {
+TEST(DemSimulator, DefaultSettingsEndWithEveryGrainInThePicture) {
   Scene s = small_dem_scene(60);
   s.dem.patience_cycles = Scene{}.dem.patience_cycles;
   RunResult r = run(s);

@@ -1,4 +1,4 @@
-// Issue 6: the DEM watches its own stiffness and sub-steps by itself.
+// The DEM watches its own stiffness and sub-steps by itself.
 #include <gtest/gtest.h>
 
 #include <cmath>

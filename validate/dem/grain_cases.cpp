@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "physics/holds.h"
 #include "physics/probe.h"
 #include "src/errors.h"
 #include "validate/dem/cases.h"
@@ -177,16 +178,16 @@ VerifyCase incline(const VerifyOptions&) {
 
 namespace {
 
-// Does a grain, placed by `setup` and left 1 s under gravity tilted by θ,
-// move less than 0.05 diameters ("holds")?
+// Does a grain, placed by `setup` and left under gravity tilted by θ, hold
+// (physics/holds.h)?
 template <class Setup>
 bool holds(const Scene& s, double theta, int k, Setup setup) {
   GrainProbe p(s, theta);
   const int slot = setup(p);
   const Vec2 start = p.position(slot);
-  const int n = int(std::lround(1.0 / p.dt()));
+  const int n = int(std::lround(kHoldSeconds / p.dt()));
   for (int i = 0; i < n; ++i) p.step();
-  return (p.position(slot) - start).norm() < 0.05 * 2 * p.radius(k);
+  return (p.position(slot) - start).norm() < kHoldDiameters * 2 * p.radius(k);
 }
 
 // The steepest θ that holds, by bisection to 0.02° (holding is monotone in θ).

@@ -1,5 +1,5 @@
 #pragma once
-// Image similarity between two pictures of one scene (issue 4): SSIM and
+// Image similarity between two pictures of one scene: SSIM and
 // PSNR on luminance, and measures that suit two stochastic piles whose
 // grains never line up pixel for pixel: the silhouette error, the per-class
 // composition error per horizontal band and SSIM after a Gaussian blur.

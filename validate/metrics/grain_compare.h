@@ -1,5 +1,5 @@
 #pragma once
-// Issue 4: two runs of one scene compared grain by grain (render --grains),
+// Two runs of one scene compared grain by grain (render --grains),
 // not only by their pictures. A grain's travel is how far from the point its
 // fall started it came to rest (|x - release_x|): the part of the pile's
 // shape the backend's piling decides, per class. Two DEM runs with different

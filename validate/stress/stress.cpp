@@ -1,4 +1,4 @@
-// Issue 6: the stress catalogue. Each case is a scene file (and the images
+// The stress catalogue. Each case is a scene file (and the images
 // it names) written into its own folder and rendered by a child sandpic, so
 // the exit code, the one-line error and the files left behind are exactly
 // what a user would get.

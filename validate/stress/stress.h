@@ -1,5 +1,5 @@
 #pragma once
-// Issue 6: a catalogue of stiff and extreme scenes, each run through the CLI
+// A catalogue of stiff and extreme scenes, each run through the CLI
 // as a user runs it (a child process: a crash or a hang is a finding, not the
 // end of the catalogue), and what became of it: a picture with every grain
 // accounted for, a one-line error (exit 2), a divergence report (exit 3), or

@@ -1,4 +1,4 @@
-// The fall as an animation (issue 7, paper Fig. 14c-d): frames to play on
+// The fall as an animation (paper Fig. 14c-d): frames to play on
 // the page, an MP4 to download.
 #include "src/studio/animation.h"
 

@@ -1,4 +1,4 @@
-// The studio's request functions, without HTTP (issue 7).
+// The studio's request functions, without HTTP.
 #include "src/studio/api.h"
 
 #include <filesystem>

@@ -1,5 +1,5 @@
 // Final renders in the background: one at a time, status with a fraction,
-// and the finished picture kept on disk (issue 7).
+// and the finished picture kept on disk.
 #include "src/studio/renders.h"
 
 #include <chrono>

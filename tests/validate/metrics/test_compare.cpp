@@ -19,7 +19,7 @@ cv::Mat fixture(const std::string& name) {
   return img;
 }
 
-// Issue 4: within 0.005 of scikit-image's structural_similarity on every
+// Within 0.005 of scikit-image's structural_similarity on every
 // pair of tests/fixtures/compare (values computed once by scikit-image,
 // make_fixture.py), and PSNR likewise.
 TEST(Compare, SsimAndPsnrAgreeWithScikitImage) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 4: validate on a small scene, end to end with the DEM, and its
+# validate on a small scene, end to end with the DEM, and its
 # report opened in headless Chromium (no network): a screenshot, and no
 # console errors. A report with a broken picture must log one (so the check
 # can fail).
