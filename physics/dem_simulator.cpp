@@ -665,14 +665,13 @@ void DemRun::frame_stage() {
 // pixel column: grains in the world and the static layer's H_s.
 bool DemRun::outline_holds() {
   if (!outline_.due(t_)) return false;
-  std::vector<double> top(heights_.hs.begin(), heights_.hs.end());
+  LayerHeights top(heights_.columns());
+  top.hs = heights_.hs;
   for_each_body([&](int32_t id, int slot) {
     const Vec2 p = world_.position(slot);
-    const double r = radius_[in_.grains.cls[size_t(id)]];
-    for (int j = heights_.first_column(p.x(), r); j <= heights_.last_column(p.x(), r); ++j)
-      top[size_t(j)] = std::max(top[size_t(j)], LayerHeights::outline(p.x(), p.y(), r, j));
+    top.add_static(p.x(), p.y(), radius_[in_.grains.cls[size_t(id)]]);
   });
-  outline_.add(t_, std::move(top));
+  outline_.add(t_, std::move(top.hs));
   return outline_.holds();
 }
 

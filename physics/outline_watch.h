@@ -5,7 +5,7 @@
 // than a hold distance, in all columns but a few (kUnsettled of them).
 //
 // The outline and not every grain: an all-dynamic heap never holds grain
-// by grain (6-8% of its grains move more than 0.05 diameters in any second,
+// by grain (6-9% of its grains move more than 0.05 diameters in any second,
 // mostly down, inside the heap, as it compacts), while its outline does.
 // A span and not a distance from where a column last moved: a column
 // sinking steadily at half the limit (an all-dynamic heap's surface, as it
