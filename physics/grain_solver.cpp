@@ -101,6 +101,10 @@ void GrainSolver::convert(btPersistentManifold* manifold, const btContactSolverI
     cp.m_combinedRestitution = 0;  // the bounce is a pass of its own
     setupContactConstraint(normal, a, b, cp, info, relaxation, r0, r1);  // warm-started by Bullet
     cp.m_combinedRestitution = e;
+    if (cp.getDistance() <= 0) {  // the split-impulse correction, past the resting overlap only
+      const btScalar excess = -cp.getDistance() - rest_overlap_;
+      normal.m_rhsPenetration = excess > 0 ? excess * info.m_erp2 / info.m_timeStep * normal.m_jacDiagABInv : 0;
+    }
     if (e > 0) {
       // The bounce answers the speed the grains met at, not that speed plus
       // this step's push of the water (physics/world.h), or e = 1 would gain

@@ -118,6 +118,10 @@ GrainWorld::GrainWorld(int width, int height, const std::array<double, kClasses>
   // default refreshes every object, and a refreshed static collider leaves
   // the broadphase's tree of fixed objects for the tree of moving ones.
   m.world.setForceUpdateAllAabbs(false);
+  double smallest = INFINITY;
+  for (double r : radius_px)
+    if (r > 0) smallest = std::min(smallest, 2 * r);
+  if (std::isfinite(smallest)) m.solver.set_rest_overlap(btScalar(kRestOverlap * smallest));
   for (int k = 0; k < kClasses; ++k) {
     m.spheres[k] = std::make_unique<btSphereShape>(btScalar(radius_px[k]));
     m.spheres[k]->calculateLocalInertia(btScalar(mass[k]), m.inertia[k]);

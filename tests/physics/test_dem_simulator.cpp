@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <tbb/parallel_for.h>
 
 #include <cmath>
 #include <cstdio>
@@ -27,6 +28,17 @@ Scene small_dem_scene(int width = 140, int region = 5) {
   s.release.outlet_width_mm = 4;
   s.mode = Mode::Dem;
   s.dem.patience_cycles = 3;
+  return s;
+}
+
+// verify-dem's quick heap: 480 grains poured from one point.
+Scene quick_heap_scene() {
+  Scene s = pile_scene();
+  s.window = {120, 60};
+  s.region.height = 4;
+  s.segment.ellipses = {EllipseSpec{60, 2, 60, 2, 0}};
+  s.init.cell_height = 4;
+  s.mode = Mode::Dem;
   return s;
 }
 
@@ -67,17 +79,52 @@ TEST(DemSimulator, SameSeedSamePictureOtherPhysicsSeedOtherPicture) {
   EXPECT_NE(run(s).png, a.png);
 }
 
-// paper §7, Fig. 9: flatter at friction 0.1, steeper at 0.9.
+// paper §7, Fig. 9: flatter at friction 0.1, steeper at 0.9. One pile this
+// small is no measure (over physics seeds 1-5 its angle's standard
+// deviation was 2-5° at either friction), so the mean of three seeds.
 TEST(DemSimulator, PileSteepensWithFriction) {
-  double last = 0;
-  for (double mu : {0.1, 0.9}) {
+  const std::vector<double> friction = {0.1, 0.9};
+  const std::vector<uint64_t> seeds = {1, 2, 3};
+  std::vector<double> angle(friction.size() * seeds.size());
+  tbb::parallel_for(size_t(0), angle.size(), [&](size_t i) {
     Scene s = small_dem_scene();
-    s.physics.friction = mu;
+    s.physics.friction = friction[i / seeds.size()];
+    s.physics_seed = seeds[i % seeds.size()];
     SimResult r = test::simulate_scene(s, *make_dem_simulator());
-    double angle = test::heap_angle_deg(test::column_heights(r.class_map));
-    std::printf("DEM friction %.1f: pile %.1f°\n", mu, angle);
-    EXPECT_GT(angle, last + 3);
-    last = angle;
+    angle[i] = test::heap_angle_deg(test::column_heights(r.class_map));
+  });
+  double last = 0;
+  for (size_t f = 0; f < friction.size(); ++f) {
+    double mean = 0;
+    for (size_t k = 0; k < seeds.size(); ++k) mean += angle[f * seeds.size() + k] / double(seeds.size());
+    std::printf("DEM friction %.1f: pile %.1f° (mean of %zu seeds)\n", friction[f], mean, seeds.size());
+    EXPECT_GT(mean, last + 3);
+    last = mean;
+  }
+}
+
+// A heap whose outline has held stays as it is. The split impulse's
+// correction, applied to every overlap, pushed resting grains apart along
+// their normals without friction at every step; this heap (480 grains,
+// all-dynamic, physics seed 2) then slid 1-2 px down its left flank 1 s
+// after its outline had held for a second (physics/grain_solver.h: the
+// resting overlap).
+TEST(DemSimulator, AHeapThatHeldStaysAsItIs) {
+  Scene s = quick_heap_scene();
+  s.dem.layers = Layers::AllDynamic;
+  s.dem.release_rate = 195.07;  // verify-dem's quick heap: poured over twice the slowest grain's fall
+  s.physics_seed = 2;
+  s.dem.run_on_s = 2;
+  SimResult r = test::simulate_scene(s, *make_dem_simulator());
+  EXPECT_TRUE(r.stats["settling"]["outline_held"].get<bool>());
+  const auto& samples = r.stats["run_on"];
+  ASSERT_GE(samples.size(), 8u);
+  const auto first = samples.front()["heights_px"].get<std::vector<int>>();
+  for (const auto& sm : samples) {
+    const auto h = sm["heights_px"].get<std::vector<int>>();
+    int changed = 0;
+    for (size_t c = 0; c < h.size(); ++c) changed += h[c] != first[c];
+    EXPECT_EQ(changed, 0) << "columns changed at t = " << sm["t_s"].get<double>() << " s";
   }
 }
 
@@ -89,12 +136,7 @@ TEST(DemSimulator, PileSteepensWithFriction) {
 // dem.static_reach_diameters those away from the flow rest as spheres, and
 // wake when it comes near.
 TEST(DemSimulator, StaticBodiesPileAsAllDynamic) {
-  Scene s = pile_scene();
-  s.window = {120, 60};
-  s.region.height = 4;
-  s.segment.ellipses = {EllipseSpec{60, 2, 60, 2, 0}};
-  s.init.cell_height = 4;
-  s.mode = Mode::Dem;
+  Scene s = quick_heap_scene();
   s.physics.friction = 0.1;
   ordered_json backend;
   auto angle = [&](Layers l, bool bodies, double reach) {
