@@ -4,9 +4,10 @@
 // outline holds when over the last kHoldSeconds each column spanned less
 // than a hold distance, in all columns but a few (kUnsettled of them).
 //
-// The outline and not every grain: an all-dynamic heap never holds grain
-// by grain (6-9% of its grains move more than 0.05 diameters in any second,
-// mostly down, inside the heap, as it compacts), while its outline does.
+// The outline and not every grain: the outline is what the picture shows.
+// (Before the resting overlap, physics/grain_solver.h, an all-dynamic heap
+// never held grain by grain: 6-9% of its grains moved more than 0.05
+// diameters in any second, mostly down, inside the heap.)
 // A span and not a distance from where a column last moved: a column
 // sinking steadily at half the limit (an all-dynamic heap's surface, as it
 // compacts) was counted as moving whenever it crossed the limit again.
