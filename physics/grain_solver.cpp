@@ -46,6 +46,7 @@ void GrainSolver::configure(btContactSolverInfo& info, int iterations) {
 // sweep carries a step's weight from the top of a pile to the floor).
 void GrainSolver::convertContacts(btPersistentManifold** manifolds, int count, const btContactSolverInfo& info) {
   bounces_.clear();
+  pushing_ = false;
   order_.clear();
   order_.reserve(size_t(count));
   for (int i = 0; i < count; ++i) {
@@ -101,9 +102,15 @@ void GrainSolver::convert(btPersistentManifold* manifold, const btContactSolverI
     cp.m_combinedRestitution = 0;  // the bounce is a pass of its own
     setupContactConstraint(normal, a, b, cp, info, relaxation, r0, r1);  // warm-started by Bullet
     cp.m_combinedRestitution = e;
-    if (cp.getDistance() <= 0) {  // the split-impulse correction, past the resting overlap only
+    if (cp.getDistance() <= 0) {
+      // The split-impulse correction: the overlap past the resting overlap
+      // is pushed out, and a contact within it may close by what is left of
+      // it, no further (a negative target: its row resists a push only past
+      // that). Every touching contact takes part, or a push would drive a
+      // grain into its other neighbours unresisted.
       const btScalar excess = -cp.getDistance() - rest_overlap_;
-      normal.m_rhsPenetration = excess > 0 ? excess * info.m_erp2 / info.m_timeStep * normal.m_jacDiagABInv : 0;
+      normal.m_rhsPenetration = excess * info.m_erp2 / info.m_timeStep * normal.m_jacDiagABInv;
+      pushing_ = pushing_ || excess > 0;
     }
     if (e > 0) {
       // The bounce answers the speed the grains met at, not that speed plus
@@ -129,6 +136,17 @@ void GrainSolver::convert(btPersistentManifold* manifold, const btContactSolverI
   }
 }
 
+
+// The position correction, only in a step where some overlap is past the
+// resting overlap (at rest, none is: the pass would only cost).
+void GrainSolver::solveGroupCacheFriendlySplitImpulseIterations(btCollisionObject** bodies, int body_count,
+                                                                 btPersistentManifold** manifolds, int manifold_count,
+                                                                 btTypedConstraint** constraints, int constraint_count,
+                                                                 const btContactSolverInfo& info, btIDebugDraw* debug) {
+  if (pushing_)
+    btSequentialImpulseConstraintSolver::solveGroupCacheFriendlySplitImpulseIterations(
+        bodies, body_count, manifolds, manifold_count, constraints, constraint_count, info, debug);
+}
 
 // One row within ±limit (a limit of zero takes a warm-started impulse off).
 btScalar GrainSolver::solve_limited(btSolverConstraint& row, btScalar limit) {

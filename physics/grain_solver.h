@@ -50,9 +50,14 @@
 // avalanched 1-2 px a second later; with the correction switched off at
 // the same moment the drift was 3e-5 px and nothing moved (10, 40 or 160
 // iterations, friction rows first, a rotational drag in the water: all
-// drifted and avalanched as before). So an overlap up to kRestOverlap of
-// the smallest grain's diameter is left as it is: the velocity rows still
-// keep it from deepening, and only the excess beyond it is pushed out
+// drifted and avalanched as before). So an overlap up to kRestOverlap
+// (physics/world.h) of the smallest grain's diameter is left as it is: the
+// velocity rows still keep it from deepening, and only the excess beyond it
+// is pushed out. Every other touching contact takes part in the push and
+// resists it past its own resting overlap: Bullet's push pass skips a row
+// without a correction of its own, and a push then drove a grain into its
+// other neighbours unresisted, deeper than the resting overlap, to be
+// pushed again at the next step
 // (docs/notebook/2026-12-05-resting-overlap.md).
 //
 // Restitution is a pass of its own after the iterations (as Box2D v3's):
@@ -70,12 +75,6 @@
 #include <BulletCollision/NarrowPhaseCollision/btManifoldPoint.h>
 #include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
 
-// How deep a resting contact may overlap before it is pushed apart, as a
-// share of the smallest grain's diameter: far above the rounding of
-// positions (1e-4 px at 2,000 px from the origin, against 0.005 px for a
-// grain of 0.5 px), and a fifth of the deepest overlap verify-dem allows.
-constexpr double kRestOverlap = 0.01;
-
 class GrainSolver : public btSequentialImpulseConstraintSolver {
  public:
   // Overlaps up to this depth (world units) are not pushed apart.
@@ -90,6 +89,10 @@ class GrainSolver : public btSequentialImpulseConstraintSolver {
   btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int body_count,
                                 btPersistentManifold** manifolds, int manifold_count, btTypedConstraint** constraints,
                                 int constraint_count, const btContactSolverInfo& info, btIDebugDraw* debug) override;
+  void solveGroupCacheFriendlySplitImpulseIterations(btCollisionObject** bodies, int body_count,
+                                                     btPersistentManifold** manifolds, int manifold_count,
+                                                     btTypedConstraint** constraints, int constraint_count,
+                                                     const btContactSolverInfo& info, btIDebugDraw* debug) override;
   btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int count,
                                          const btContactSolverInfo& info) override;
 
@@ -105,6 +108,7 @@ class GrainSolver : public btSequentialImpulseConstraintSolver {
     btManifoldPoint* point = nullptr;
   };
   btScalar rest_overlap_ = 0;
+  bool pushing_ = false;  // some overlap in this step is past the resting overlap
   std::vector<Bounce> bounces_;
   std::vector<std::pair<btScalar, int>> order_, spare_;  // (−height, manifold) of this step's contacts
 };

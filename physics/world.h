@@ -17,6 +17,13 @@ class btRigidBody;
 
 namespace sandpic {
 
+// How deep a resting contact may overlap before it is pushed apart, as a
+// share of the smallest grain's diameter (physics/grain_solver.h): far above
+// the rounding of positions (1e-4 px at 2,000 px from the origin, against
+// 0.005 px for a grain of 0.5 px), and a fifth of the deepest overlap
+// verify-dem allows.
+constexpr double kRestOverlap = 0.01;
+
 struct GrainMaterial {
   double friction = 0.4, restitution = 0.1, rolling_resistance = 0.3;
   int solver_iterations = 10;

@@ -206,9 +206,14 @@ VerifyCase heap(const VerifyOptions& opt) {
       c.checks.push_back(at_most(name + ": " + what + ", largest fall beyond the seed spreads", worst_drop, 0, "°"));
       if (rising < 2) return;
       const auto &first = seq.front(), &last = seq[rising - 1];
-      const double rise = mean(last) - mean(first) - 2 * (spread(last) + spread(first));
-      c.checks.push_back({name + ": " + what + ", rise from first to last beyond 2 seed spreads", "°", rise, 0, 0,
-                          VerifyCheck::Kind::AtLeast});
+      // The quick heap's seeds scatter by about 3° (see plan()), as much as
+      // a rise the notch case predicts (μ 0.9, μ_r 0.1 -> 0.3: 30° +
+      // atan(μ_r/2), 5.7°; two seeds measured 6.0° with spreads of 3.6°):
+      // there only the rise's sign is checked, the full run's 3,600-grain
+      // heaps resolve it beyond 2 seed spreads.
+      const double margin = opt.quick ? 0 : 2 * (spread(last) + spread(first));
+      c.checks.push_back({name + ": " + what + (opt.quick ? ", rise from first to last" : ", rise from first to last beyond 2 seed spreads"),
+                          "°", mean(last) - mean(first) - margin, 0, 0, VerifyCheck::Kind::AtLeast});
     };
     for (double mr : rolling) {
       std::vector<std::vector<double>> seq;
