@@ -49,7 +49,7 @@ TEST(GrainWorld, RollingResistanceHoldsASphereUpToItsAngle) {
 // The position correction pushes apart only what overlaps past the resting
 // overlap, and every other touching contact resists the push past its own
 // resting overlap: a column of three small grains, no gravity, the top pair
-// overlapping by 5% of a diameter and the bottom pair by 0.5%. The push
+// overlapping by 5.5% of a diameter and the bottom pair by 0.5%. The push
 // apart of the top pair used to drive the middle grain into the bottom one
 // unresisted (its overlap 0.5% -> 1.2%, pushed again at the next step: a
 // heap's load pumped down through it).
