@@ -2,8 +2,7 @@
 // paper §7, Eq. 1-2: one release model for both backends. A grain leaves its
 // resting place with the horizontal speed that carries it to its unit's
 // outlet while it falls, then drops from a point across the outlet's width.
-#include <functional>
-#include <queue>
+#include <cstdint>
 #include <vector>
 
 #include "src/segment/segment.h"
@@ -44,12 +43,41 @@ struct Arrival {
   int64_t order;  // index in the falling order
   bool operator>(const Arrival& o) const { return time != o.time ? time > o.time : order > o.order; }
 };
-using Arrivals = std::priority_queue<Arrival, std::vector<Arrival>, std::greater<>>;
+
+// The grains on their way, earliest first (ties in falling order). With a
+// bucket width, a calendar queue: arrivals wait unsorted in buckets of that
+// many seconds and only the earliest bucket is a heap, so a pop sifts
+// through the few grains due together, not through every grain in flight
+// (the lattice keeps tens of thousands in flight at the paper's scale).
+// Without one (0), a plain heap. The order is exact either way.
+class Arrivals {
+ public:
+  explicit Arrivals(double bucket_s = 0) : bucket_s_(bucket_s) {}
+  bool empty() const { return size_ == 0; }
+  size_t size() const { return size_; }
+  const Arrival& top();
+  void push(const Arrival& a);
+  void pop();
+
+ private:
+  int64_t bucket(double time) const;
+  double bucket_s_;
+  size_t size_ = 0;
+  int64_t open_ = 0;                 // the bucket the heap holds (and any before it)
+  int64_t base_ = 0;                 // the bucket first_[0] stands for
+  std::vector<Arrival> heap_;        // std::greater<>: the earliest at the front
+  std::vector<int32_t> first_;       // per bucket from base_ on: its first arrival in pool_, -1 none
+  std::vector<Arrival> pool_;        // arrivals waiting in later buckets, each bucket a list
+  std::vector<int32_t> next_;        // the next arrival of the same bucket, -1 none
+  std::vector<int32_t> free_;        // slots of pool_ to reuse
+};
 
 // When a grain released at t_release (s) reaches `land_px` (px above the
 // floor): Eq. 1 to the outlet (`outlet_up_px` above the floor), then straight
 // down at its settling speed (0: at once). Both backends order landings by it.
 double arrival_time(double t_release, const ReleasePath& p, double outlet_up_px, double land_px, double settling_px_s);
+// The same from the time it is at its outlet's height (t_release + p.t).
+double arrival_time(double at_outlet_s, double outlet_up_px, double land_px, double settling_px_s);
 
 // Only where the fall starts: what a backend without flight needs.
 double exit_x(const ReleaseModel& m, const Outlet& o, int32_t id);

@@ -25,6 +25,15 @@ class StageTimes {
     seconds_[i] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
+  // Runs f() and adds its wall time to stage i, less what stage `inner`
+  // gained meanwhile (a stage that runs within f, reported on its own).
+  template <class F>
+  void time_without(size_t i, size_t inner, F&& f) {
+    const double before = seconds_[inner];
+    time(i, f);
+    seconds_[i] -= seconds_[inner] - before;
+  }
+
   // {"name": seconds, ...} in the stages' order.
   ordered_json json() const {
     ordered_json out = ordered_json::object();

@@ -78,6 +78,24 @@ TEST(LatticeSimulator, EveryGrainSettlesInThePicture) {
   EXPECT_EQ(r.stats["grains"]["total"].get<int64_t>(), 400 * 80);
 }
 
+// Where the time went: the stages in their order, within the simulate time
+// (the frames apart from the landings they interrupt).
+TEST(LatticeSimulator, StatsSayWhereTheTimeWent) {
+  Scene s = test::one_ellipse_scene();
+  auto sim = make_lattice_simulator();
+  RunResult r = run_pipeline(s, *sim, RunOptions{});
+  std::vector<std::string> names;
+  double sum = 0;
+  for (const auto& [name, seconds] : r.stats["backend"]["stages_s"].items()) {
+    names.push_back(name);
+    EXPECT_TRUE(std::isfinite(seconds.get<double>()) && seconds.get<double>() >= 0) << name;
+    sum += seconds.get<double>();
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"land", "frames", "draw"}));
+  EXPECT_GT(r.stats["backend"]["stages_s"]["land"].get<double>(), 0);
+  EXPECT_LE(sum, r.stats["timing"]["simulate_s"].get<double>());
+}
+
 // A lattice run of the scene with `count` frames of its fall kept.
 struct FramedRun {
   Initialization init;

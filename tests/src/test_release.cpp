@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <queue>
+#include <random>
 
 #include "src/release.h"
 
@@ -64,6 +66,52 @@ TEST(Release, AnOutletPastAWallIsMovedInside) {
       EXPECT_LE(x, s.window.width);
     }
     EXPECT_NEAR(std::abs(o.centre.x() - s.window.width / 2.0), s.window.width / 2.0 - o.width / 2, 1e-9);
+  }
+}
+
+// The calendar queue gives the arrivals in exactly the order of a plain
+// heap: by time, ties in falling order, whatever the bucket width, with
+// pushes into the open bucket, into the past and far beyond the last bucket.
+TEST(Arrivals, TheCalendarKeepsTheOrderOfAPlainHeap) {
+  for (double bucket_s : {0.0, 1e-3, 0.25, 7.0}) {
+    Arrivals calendar(bucket_s);
+    std::priority_queue<Arrival, std::vector<Arrival>, std::greater<>> heap;
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> later(0, 2);
+    double now = 0;
+    int64_t order = 0;
+    std::vector<int64_t> got, want;
+    for (int step = 0; step < 20000; ++step) {
+      const int pushes = int(rng() % 3);
+      for (int p = 0; p < pushes; ++p) {
+        double t = now + later(rng);
+        if (rng() % 50 == 0) t = now;                  // due at once
+        if (rng() % 97 == 0) t = std::max(0.0, now - 1);  // in the past
+        if (rng() % 499 == 0) t = now + 1e9;             // past the last bucket
+        if (rng() % 7 == 0 && !want.empty()) t = std::floor(now * 4) / 4 + 0.25;  // ties
+        calendar.push({t, order});
+        heap.push({t, order});
+        ++order;
+      }
+      if (rng() % 2 && !heap.empty()) {
+        ASSERT_FALSE(calendar.empty());
+        EXPECT_EQ(calendar.top().time, heap.top().time);
+        got.push_back(calendar.top().order);
+        want.push_back(heap.top().order);
+        now = std::max(now, heap.top().time);
+        calendar.pop();
+        heap.pop();
+      }
+      ASSERT_EQ(calendar.size(), heap.size());
+    }
+    while (!heap.empty()) {
+      got.push_back(calendar.top().order);
+      want.push_back(heap.top().order);
+      calendar.pop();
+      heap.pop();
+    }
+    EXPECT_TRUE(calendar.empty());
+    EXPECT_EQ(got, want) << "bucket " << bucket_s << " s";
   }
 }
 
