@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 
 #include <tbb/parallel_for.h>
 
@@ -127,11 +128,79 @@ int HeightField::room_near(int c, double rise) const {
   return -1;
 }
 
+namespace {
+
+// Two doubles at once (GCC/Clang vector extensions: SSE2, NEON or plain code).
+using Pair = double __attribute__((vector_size(16)));
+using PairMask = long long __attribute__((vector_size(16)));
+Pair pair_at(const double* p) {
+  Pair v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+// The steep bits toward `dir` of 2·P columns from p[0] on, as a bit mask:
+// two columns at a time, branch-free over the window (P known to the
+// compiler, so the pairs stay in registers).
+template <int P>
+uint32_t steep_mask(const double* p, int dir, int window, double t) {
+  Pair tops[P];
+  PairMask any[P];
+  for (int m = 0; m < P; ++m) {
+    tops[m] = pair_at(p + 2 * m);
+    any[m] = PairMask{0, 0};
+  }
+  for (int k = 1; k <= window; ++k) {
+    const double reach = k * t;  // as unstable(): the same rounding
+    const Pair r = {reach, reach};
+    for (int m = 0; m < P; ++m) any[m] |= tops[m] - pair_at(p + 2 * m + dir * k) > r;
+  }
+  uint32_t steep = 0;
+  for (int m = 0; m < P; ++m) steep |= uint32_t(any[m][0] & 1) << (2 * m) | uint32_t(any[m][1] & 1) << (2 * m + 1);
+  return steep;
+}
+
+}  // namespace
+
+// The steep bits toward side's direction of columns first..first+count-1
+// (count <= kShortWindow + 1), from the heights. Columns outside the window
+// (the padding) are computed and not kept.
+void HeightField::recompute(Slopes& s, int side, int first, int count) {
+  const int dir = side == 0 ? 1 : -1, window = s.rule.window;
+  const double t = s.rule.drop_per_column, *p = h_.data() + kPad + first;
+  static_assert(kShortWindow + 1 <= 10 && kPad >= 2 * kShortWindow + 2);
+  uint32_t steep = 0;
+  switch ((count + 1) / 2) {
+    case 1: steep = steep_mask<1>(p, dir, window, t); break;
+    case 2: steep = steep_mask<2>(p, dir, window, t); break;
+    case 3: steep = steep_mask<3>(p, dir, window, t); break;
+    case 4: steep = steep_mask<4>(p, dir, window, t); break;
+    default: steep = steep_mask<5>(p, dir, window, t); break;
+  }
+  const int lo = std::max(first, 0), hi = std::min(first + count - 1, columns_ - 1);
+  if (lo > hi) return;
+  const int n = hi - lo + 1, at = lo & 63;
+  const uint64_t field = (1ull << n) - 1, value = (uint64_t(steep) >> (lo - first)) & field;
+  std::vector<uint64_t>& bits = s.steep[side];
+  uint64_t& word = bits[size_t(lo) >> 6];
+  word = (word & ~(field << at)) | (value << at);
+  if (at + n > 64) {  // into the next word (at > 0 here: n < 64)
+    uint64_t& next = bits[size_t(lo >> 6) + 1];
+    next = (next & ~(field >> (64 - at))) | (value >> (64 - at));
+  }
+}
+
 // Column c rose. It may have become steep on either side; the columns within
-// the window that look at it can only have become less steep, so only those
-// marked steep need a second look, found by scanning the bit words.
+// the window that look at it can only have become less steep. A short window
+// recomputes them all at once (c-k..c toward +x, c..c+k toward -x); a long
+// one looks again only at those marked steep, found by scanning the bit words.
 void HeightField::refresh(Slopes& s, int c) {
   const int k = s.rule.window;
+  if (k <= kShortWindow) {
+    recompute(s, 0, c - k, k + 1);
+    recompute(s, 1, c, k + 1);
+    return;
+  }
   for (int side = 0; side < 2; ++side) {
     const int dir = side == 0 ? 1 : -1;
     std::vector<uint64_t>& bits = s.steep[side];

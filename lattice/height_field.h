@@ -62,6 +62,7 @@ class HeightField {
 
  private:
   static constexpr int kPad = kMaxWindow + 1;
+  static constexpr int kShortWindow = 8;  // recomputed whole on each deposit (refresh)
   // Per rule, which columns a grain cannot rest on because the slope toward
   // +x (side 0) or -x (side 1) is too steep; kept up to date by deposit(),
   // so a slide is a scan for the next clear bit.
@@ -76,6 +77,7 @@ class HeightField {
   bool steep(const Slopes& s, int c, int dir) const;
   int next_resting(const Slopes& s, int c, int dir) const;
   void refresh(Slopes& s, int c);
+  void recompute(Slopes& s, int side, int first, int count);
 
   std::vector<double> h_;  // kPad walls, the columns, kPad walls
   int columns_;
