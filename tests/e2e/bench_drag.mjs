@@ -76,6 +76,9 @@ function analyse(d) {
              stale: carried(s.decoded) > i };
   });
   const seconds = (d.end - d.t0) / 1000;
+  // While the drag lasts, the studio waits this long between an answer and
+  // the next request (the page reading the answer and sending the scene).
+  const gaps = d.requests.flatMap((r, i) => (i > 0 && r.sent <= d.end ? [r.sent - d.requests[i - 1].answered] : []));
   return {
     seconds,
     changes: d.changes.length,
@@ -89,6 +92,7 @@ function analyse(d) {
     roundTrip: quantile(trips.map((t) => t.total), 0.5),
     roundTripP90: quantile(trips.map((t) => t.total), 0.9),
     parts: Object.fromEntries(['wait', 'request', 'lattice', 'prepare', 'simulate', 'decode'].map((k) => [k, quantile(trips.map((t) => t[k]), 0.5)])),
+    gap: quantile(gaps, 0.5),
     settle: d.shown.at(-1).painted - d.changes.at(-1),
     finalFriction: d.friction,
     trips,
@@ -128,7 +132,8 @@ await benchStudio(args.sandpic, `sandpic studio preview while dragging slider ${
               `(of all ${allTrips.length} previews shown), single changes ${ms(single.median).trim()} ms; ` +
               `server lattice per preview ${ms(quantile(allTrips.map((t) => t.lattice), 0.5)).trim()} ms ` +
               `(the layout ${ms(quantile(allTrips.map((t) => t.prepare), 0.5)).trim()} ms, ` +
-              `the fall ${ms(quantile(allTrips.map((t) => t.simulate), 0.5)).trim()} ms)`);
+              `the fall ${ms(quantile(allTrips.map((t) => t.simulate), 0.5)).trim()} ms); ` +
+              `the studio idle between an answer and the next request ${med((d) => d.gap).toFixed(1)} ms`);
   if (args.json) {
     fs.writeFileSync(args.json, JSON.stringify({ hz: HZ, path: PATH, single: { ...single, samples: singles }, drags }, null, 2));
     console.log(`samples in ${args.json}`);

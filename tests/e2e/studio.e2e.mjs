@@ -305,8 +305,8 @@ async function main() {
       t.before = new Uint8Array(await (await fetch(img.src)).arrayBuffer());
       t.mo = new MutationObserver(() => t.shown.push(Number(img.dataset.seq)));
       t.mo.observe(img, { attributes: true, attributeFilter: ['data-seq'] });
-      // Requests out: counted in when sent, out when answered (the page sends
-      // the next preview only after reading an answer).
+      // Requests out: counted in when sent, out when the answer's headers are
+      // in (the page sends the next preview no sooner).
       t.orig = window.fetch;
       t.fetch = t.orig.bind(window);
       window.fetch = async (url, opts) => {

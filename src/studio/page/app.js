@@ -13,6 +13,7 @@ const App = {
   picture: null,     // the last preview's PNG (Blob)
   timer: 0,          // a typed change waiting for the next keystroke, 0 if none
   seq: 0,            // the number of the newest preview asked for
+  shownSeq: 0,       // the number of the preview shown
   inflight: false,   // a preview request is out: at most one is
   dirty: false,      // the scene changed since the last preview request was sent
   fallSeq: 0,        // likewise animations: a newer one stops an older one playing
@@ -202,47 +203,61 @@ const App = {
 
   // Every answer is shown: answers come in the order sent (one at a time),
   // so one for a scene changed since is still the newest picture the page
-  // has and nearer the scene than the one before. The units and the fall's
-  // autoplay wait for the answer of the scene as it is (at the end of a
-  // drag): mid-drag they would be outdated at once and take the studio's
-  // time from the next preview. An error for a changed scene is dropped:
-  // the newer scene's answer follows at once.
+  // has and nearer the scene than the one before. The next request goes as
+  // soon as an answer's headers are in (the studio is done with it), while
+  // its picture is read and decoded. The units and the fall's autoplay wait
+  // for the answer of the scene as it is (at the end of a drag): mid-drag
+  // they would be outdated at once and take the studio's time from the next
+  // preview. An error for a changed scene is dropped: the newer scene's
+  // answer follows at once.
   async preview() {
     const seq = ++this.seq, t0 = performance.now();
     this.inflight = true;
     this.status('rendering preview...');
-    let retry = false;
+    let res;
     try {
-      const scene = { ...this.scene, mode: 'lattice' };
-      const res = await api('POST', '/api/preview', scene);
-      const blob = await res.blob();
-      const current = !this.dirty && !this.timer;
-      this.clearErrors();
-      this.picture = blob;
-      const img = document.getElementById('preview');
-      URL.revokeObjectURL(img.src);
-      img.src = URL.createObjectURL(blob);
-      // Tests and the benchmark wait on this: the preview numbered seq is decoded, on screen.
-      img.decode().then(() => { img.dataset.seq = seq; }, () => {});
-      const stats = JSON.parse(res.headers.get('X-Sandpic-Stats') || '{}');
-      document.getElementById('stats').textContent =
-        `${stats.grains?.total ?? '?'} grains, ${stats.units ?? '?'} units, ` +
-        `lattice ${(stats.timing?.total_s ?? 0).toFixed(2)} s, round trip ${((performance.now() - t0) / 1000).toFixed(2)} s`;
-      this.status('');
-      if (current) {
-        this.units();
-        if (document.getElementById('autoplay').checked) this.playFall();
-      }
+      res = await api('POST', '/api/preview', { ...this.scene, mode: 'lattice' });
     } catch (e) {
-      this.status('');
-      // 409: another page's newer preview took this one's place in the
-      // studio's queue of one; this scene is asked for again shortly after.
-      if (e.status === 409) retry = this.dirty = true;
-      else if (!this.dirty && !this.timer) this.showError(e);
-    } finally {
       this.inflight = false;
-      if (retry) setTimeout(() => this.next(), 100);
-      else this.next();
+      this.status('');
+      if (e.status === 409) {
+        // Another page's newer preview took this one's place in the studio's
+        // queue of one: this scene is asked for again shortly after.
+        this.dirty = true;
+        setTimeout(() => this.next(), 100);
+        return;
+      }
+      if (!this.dirty && !this.timer) this.showError(e);
+      this.next();
+      return;
+    }
+    const current = !this.dirty && !this.timer;
+    this.inflight = false;
+    this.next();
+    let blob;
+    try {
+      blob = await res.blob();
+    } catch (e) {
+      if (current) this.showError(e);
+      return;
+    }
+    if (seq < this.shownSeq) return;  // a newer answer was read first
+    this.shownSeq = seq;
+    this.clearErrors();
+    this.picture = blob;
+    const img = document.getElementById('preview');
+    URL.revokeObjectURL(img.src);
+    img.src = URL.createObjectURL(blob);
+    // Tests and the benchmark wait on this: the preview numbered seq is decoded, on screen.
+    img.decode().then(() => { img.dataset.seq = seq; }, () => {});
+    const stats = JSON.parse(res.headers.get('X-Sandpic-Stats') || '{}');
+    document.getElementById('stats').textContent =
+      `${stats.grains?.total ?? '?'} grains, ${stats.units ?? '?'} units, ` +
+      `lattice ${(stats.timing?.total_s ?? 0).toFixed(2)} s, round trip ${((performance.now() - t0) / 1000).toFixed(2)} s`;
+    if (!this.inflight) this.status('');
+    if (current) {
+      this.units();
+      if (document.getElementById('autoplay').checked) this.playFall();
     }
   },
 
