@@ -4,7 +4,9 @@
 // runs to the end and downloads as a PNG of the scaled size, and another is
 // cancelled (a build without Bullet shows the mode key's error beside the
 // control instead); the fall plays and downloads as MP4; the scene and the
-// picture download. No console error and no page error throughout.
+// picture download; the friction slider dragged shows previews while it
+// moves and ends on its final value's picture. No console error and no page
+// error throughout.
 // Screenshots of every step are kept in --artifacts.
 //
 //   node tests/e2e/studio.e2e.mjs [--sandpic build/sandpic] [--artifacts build/e2e-artifacts]
@@ -289,7 +291,78 @@ async function main() {
     assert.ok((await shown()).equals(afterCell), 'the scene file dropped back: the same picture, byte for byte');
     log('scene.json dropped back: the same preview bytes as when it was downloaded');
 
-    // 10. A final render cancelled: it stops, says so, and keeps nothing.
+    // 10. The friction slider dragged with the mouse: the preview follows
+    // the hand (previews shown before the drag ends, each request sent once
+    // the one before is answered: never two in flight), and the last one is
+    // the picture of the final slider value. No timing is asserted: the drag
+    // goes on (1-10 s) until two previews were shown during it.
+    const slider = page.locator('#friction-slider');
+    await slider.scrollIntoViewIfNeeded();
+    const sbox = await slider.boundingBox();
+    const frictionBefore = await page.evaluate(() => App.scene.physics.friction);
+    await page.evaluate(async () => {
+      const img = document.getElementById('preview'), t = (window.__drag = { shown: [], inflight: 0, maxInflight: 0, sent: [] });
+      t.before = new Uint8Array(await (await fetch(img.src)).arrayBuffer());
+      t.mo = new MutationObserver(() => t.shown.push(Number(img.dataset.seq)));
+      t.mo.observe(img, { attributes: true, attributeFilter: ['data-seq'] });
+      // Requests out: counted in when sent, out when the answer's headers are
+      // in (the page sends the next preview no sooner).
+      t.orig = window.fetch;
+      t.fetch = t.orig.bind(window);
+      window.fetch = async (url, opts) => {
+        if (!String(url).startsWith('/api/preview')) return t.fetch(url, opts);
+        t.sent.push(JSON.parse(opts.body).physics.friction);
+        t.maxInflight = Math.max(t.maxInflight, ++t.inflight);
+        try { return await t.fetch(url, opts); } finally { t.inflight--; }
+      };
+    });
+    const y = sbox.y + sbox.height / 2, x0 = sbox.x + 4, x1 = sbox.x + sbox.width - 4;
+    await page.mouse.move(x0 + 0.15 * (x1 - x0), y);
+    await page.mouse.down();
+    const dragStart = Date.now();
+    let moves = 0, during = 0;
+    // Back and forth over the middle of the slider (friction about 0.3 to
+    // 1.7), a move every ~16 ms as a hand.
+    while (Date.now() - dragStart < 1000 || (during < 2 && Date.now() - dragStart < 10_000)) {
+      const f = 0.15 + 0.7 * (1 - Math.abs(((moves++ / 90) % 2) - 1));
+      await page.mouse.move(x0 + f * (x1 - x0), y);
+      await new Promise((r) => setTimeout(r, 16));
+      during = await page.evaluate(() => window.__drag.shown.length);
+    }
+    await page.mouse.move(x0 + 0.62 * (x1 - x0), y);
+    await page.mouse.up();
+    const dragSeconds = (Date.now() - dragStart) / 1000;
+    const drag = await page.evaluate(() => ({ shown: window.__drag.shown.length, value: document.getElementById('friction-slider').value }));
+    seq = await waitForPreview(page, seq);
+    const dragged = await page.evaluate(() => {
+      const t = window.__drag;
+      t.mo.disconnect();
+      window.fetch = t.orig;
+      return { maxInflight: t.maxInflight, sent: t.sent, friction: App.scene.physics.friction,
+               field: document.querySelector('input[type=number][data-key="physics.friction"]').value };
+    });
+    assert.ok(drag.shown > 1, `previews shown while the slider moved (${drag.shown})`);
+    assert.equal(dragged.maxInflight, 1, 'one preview request in flight at most');
+    assert.equal(dragged.friction, Number(drag.value), 'the scene has the final slider value');
+    assert.notEqual(dragged.friction, frictionBefore, 'the drag changed the friction');
+    assert.equal(Number(dragged.field), dragged.friction, "the friction's number field follows the slider");
+    assert.equal(dragged.sent.at(-1), dragged.friction, 'the last preview asked for is of the final value');
+    // The picture shown against the studio's picture of the scene now (same
+    // scene and seed, same bytes) and the one before the drag, in the page.
+    const pictures = await page.evaluate(async () => {
+      const bytes = async (res) => new Uint8Array(await res.arrayBuffer());
+      const same = (a, b) => a.length === b.length && a.every((v, i) => v === b[i]);
+      const now = await bytes(await fetch(document.getElementById('preview').src));
+      const fresh = await bytes(await fetch('/api/preview', { method: 'POST', body: JSON.stringify({ ...App.scene, mode: 'lattice' }) }));
+      return { fresh: same(now, fresh), before: same(now, window.__drag.before), size: now.length };
+    });
+    assert.ok(pictures.fresh, "the preview shown is the final value's picture, byte for byte");
+    assert.ok(!pictures.before, 'the friction dragged changes the preview');
+    log(`friction slider dragged ${dragSeconds.toFixed(1)} s (${moves} moves, ${dragged.sent.length} requests): ` +
+        `${drag.shown} previews shown before the drag ended; final friction ${dragged.friction}, the final value's picture shown (${pictures.size} bytes)`);
+    await shot('slider-dragged');
+
+    // 11. A final render cancelled: it stops, says so, and keeps nothing.
     if (dem === 'with-bullet') {
       await page.fill('#render-scale', '0.3');  // half an hour if it ran
       await page.click('#final-render');

@@ -1,13 +1,21 @@
-// sandpic studio's page: controls bound to scene keys, a debounced lattice
-// preview, the fall played as an animation, flip, cell colours painted by
-// hand, final DEM renders with progress and cancel, downloads, drag and drop.
+// sandpic studio's page: controls bound to scene keys, a lattice preview
+// that follows a slider as it moves, the fall played as an animation, flip,
+// cell colours painted by hand, final DEM renders with progress and cancel,
+// downloads, drag and drop.
 'use strict';
+
+// A number typed key by key waits this long after its last keystroke: a
+// half-typed "1." or the "3" of "350" is no value to show.
+const TYPING_MS = 150;
 
 const App = {
   scene: null,
   picture: null,     // the last preview's PNG (Blob)
-  timer: 0,
-  seq: 0,            // previews answered out of order are dropped
+  timer: 0,          // a typed change waiting for the next keystroke, 0 if none
+  seq: 0,            // the number of the newest preview asked for
+  shownSeq: 0,       // the number of the preview shown
+  inflight: false,   // a preview request is out: at most one is
+  dirty: false,      // the scene changed since the last preview request was sent
   fallSeq: 0,        // likewise animations: a newer one stops an older one playing
   renderId: 0,       // the final render running, 0 if none
 
@@ -34,17 +42,26 @@ const App = {
       } else if (el.type === 'number' && k.min !== undefined) {
         el.min = k.min;
         el.max = k.max;
+      } else if (el.type === 'range' && k.min !== undefined) {
+        // A slider spans the part of the key's range its page sets, within the range.
+        el.min = Math.max(Number(el.min), k.min);
+        el.max = Math.min(Number(el.max), k.max);
       }
     }
   },
 
   bind() {
     for (const el of document.querySelectorAll('[data-key]')) {
-      el.addEventListener('input', () => {
-        const v = el.type === 'number' ? Number(el.value) : el.value;
-        if (el.dataset.key === 'preset') return this.loadPreset(v);
-        Scene.set(this.scene, el.dataset.key, v);
-        this.changed();
+      el.addEventListener('input', (e) => {
+        const key = el.dataset.key;
+        const v = el.type === 'number' || el.type === 'range' ? Number(el.value) : el.value;
+        if (key === 'preset') return this.loadPreset(v);
+        Scene.set(this.scene, key, v);
+        // The key's other control (a slider's number field) follows.
+        for (const other of document.querySelectorAll(`[data-key="${key}"]`)) if (other !== el) other.value = el.value;
+        // Keystrokes (an InputEvent with an inputType) wait for the next one;
+        // a slider, a number field's arrows and a menu (a plain Event) go at once.
+        this.changed(e.inputType ? TYPING_MS : 0);
       });
     }
     for (const el of document.querySelectorAll('[data-color]')) {
@@ -161,39 +178,86 @@ const App = {
     this.sketchRemoved();
   },
 
-  // A preview 150 ms after the last change: typing a number makes one request.
-  changed(delay = 150) {
+  // Previews as fast as the studio answers them, one request in flight at
+  // most: a change while one is out only marks the scene dirty, and the
+  // answer sends the newest scene at once. While a slider is dragged the
+  // preview follows it without a queue of stale scenes; a single change is
+  // sent at once. `delay`: a typed change waits that long for the next
+  // keystroke (TYPING_MS).
+  changed(delay = 0) {
     clearTimeout(this.timer);
+    this.timer = 0;
+    this.dirty = true;
     Sketch.draw(this.scene);
-    this.timer = setTimeout(() => this.preview(), delay);
+    if (delay > 0) this.timer = setTimeout(() => { this.timer = 0; this.next(); }, delay);
+    else this.next();
   },
 
+  // The newest scene, if it has changed, unless a request is out or a typed
+  // change waits for its next keystroke (each calls this again when done).
+  next() {
+    if (this.inflight || this.timer || !this.dirty) return;
+    this.dirty = false;
+    this.preview();
+  },
+
+  // Every answer is shown: answers come in the order sent (one at a time),
+  // so one for a scene changed since is still the newest picture the page
+  // has and nearer the scene than the one before. The next request goes as
+  // soon as an answer's headers are in (the studio is done with it), while
+  // its picture is read and decoded. The units and the fall's autoplay wait
+  // for the answer of the scene as it is (at the end of a drag): mid-drag
+  // they would be outdated at once and take the studio's time from the next
+  // preview. An error for a changed scene is dropped: the newer scene's
+  // answer follows at once.
   async preview() {
     const seq = ++this.seq, t0 = performance.now();
+    this.inflight = true;
     this.status('rendering preview...');
+    let res;
     try {
-      const scene = { ...this.scene, mode: 'lattice' };
-      const res = await api('POST', '/api/preview', scene);
-      const blob = await res.blob();
-      if (seq !== this.seq) return;
-      this.clearErrors();
-      this.picture = blob;
-      const img = document.getElementById('preview');
-      URL.revokeObjectURL(img.src);
-      img.src = URL.createObjectURL(blob);
-      // Tests and the benchmark wait on this: the preview numbered seq is decoded, on screen.
-      img.decode().then(() => { img.dataset.seq = seq; }, () => {});
-      const stats = JSON.parse(res.headers.get('X-Sandpic-Stats') || '{}');
-      document.getElementById('stats').textContent =
-        `${stats.grains?.total ?? '?'} grains, ${stats.units ?? '?'} units, ` +
-        `lattice ${(stats.timing?.total_s ?? 0).toFixed(2)} s, round trip ${((performance.now() - t0) / 1000).toFixed(2)} s`;
+      res = await api('POST', '/api/preview', { ...this.scene, mode: 'lattice' });
+    } catch (e) {
+      this.inflight = false;
       this.status('');
+      if (e.status === 409) {
+        // Another page's newer preview took this one's place in the studio's
+        // queue of one: this scene is asked for again shortly after.
+        this.dirty = true;
+        setTimeout(() => this.next(), 100);
+        return;
+      }
+      if (!this.dirty && !this.timer) this.showError(e);
+      this.next();
+      return;
+    }
+    const current = !this.dirty && !this.timer;
+    this.inflight = false;
+    this.next();
+    let blob;
+    try {
+      blob = await res.blob();
+    } catch (e) {
+      if (current) this.showError(e);
+      return;
+    }
+    if (seq < this.shownSeq) return;  // a newer answer was read first
+    this.shownSeq = seq;
+    this.clearErrors();
+    this.picture = blob;
+    const img = document.getElementById('preview');
+    URL.revokeObjectURL(img.src);
+    img.src = URL.createObjectURL(blob);
+    // Tests and the benchmark wait on this: the preview numbered seq is decoded, on screen.
+    img.decode().then(() => { img.dataset.seq = seq; }, () => {});
+    const stats = JSON.parse(res.headers.get('X-Sandpic-Stats') || '{}');
+    document.getElementById('stats').textContent =
+      `${stats.grains?.total ?? '?'} grains, ${stats.units ?? '?'} units, ` +
+      `lattice ${(stats.timing?.total_s ?? 0).toFixed(2)} s, round trip ${((performance.now() - t0) / 1000).toFixed(2)} s`;
+    if (!this.inflight) this.status('');
+    if (current) {
       this.units();
       if (document.getElementById('autoplay').checked) this.playFall();
-    } catch (e) {
-      if (e.status === 409 || seq !== this.seq) return;  // superseded by a newer preview
-      this.showError(e);
-      this.status('');
     }
   },
 
@@ -409,8 +473,7 @@ const App = {
       if (key && key.startsWith(el.dataset.errorFor) && (!slot || el.dataset.errorFor.length > slot.dataset.errorFor.length))
         slot = el;
     (slot || document.getElementById('general-error')).textContent = e.message;
-    const control = document.querySelector(`[data-key="${key}"]`);
-    if (control) control.classList.add('invalid');
+    for (const control of document.querySelectorAll(`[data-key="${key}"]`)) control.classList.add('invalid');
   },
 };
 
