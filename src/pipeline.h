@@ -3,6 +3,7 @@
 // function over plain data, timed into the stats (paper Table 1's columns).
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "src/estimate.h"
@@ -30,6 +31,10 @@ struct RunOptions {
   std::function<void(const cv::Mat& picture)> frame = nullptr;
   Limits limits = {};  // checked against estimate_run before anything is allocated
   bool grains = false;  // keep every grain's release point and resting place (RunResult::grains)
+  // The stages before the simulation, from an earlier run of a scene with the
+  // same layout_key (the studio's previews while a physics key is dragged);
+  // nullptr: prepared here.
+  std::shared_ptr<const struct Prepared> prepared = nullptr;
 };
 
 struct RunResult {
@@ -39,6 +44,7 @@ struct RunResult {
   ordered_json stats;
   Stages stages;
   std::string grains;  // with RunOptions::grains: the grain table (src/grain_table.h), CSV
+  std::shared_ptr<const struct Prepared> prepared;  // what the simulation started from, to reuse
 };
 
 // The stages before the simulation, what every backend starts from:
@@ -52,6 +58,9 @@ struct Prepared {
 };
 // `timing`, if given, gets init_s, segment_s and order_s.
 Prepared prepare(const Scene& s, ordered_json* timing = nullptr);
+// The values of every key the stages before the simulation read (paper
+// §4-6) and the layout seed: scenes with the same key prepare the same.
+std::string layout_key(const Scene& s);
 
 // Throws InputError (bad scene or file), SimulationError (a grain lost, a
 // NaN) or Cancelled (opt.cancel set): nothing is returned that should not be written.

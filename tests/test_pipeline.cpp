@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <tbb/global_control.h>
@@ -45,6 +47,32 @@ TEST(Pipeline, SameSeedSameBytesAtAnyThreadCount) {
   Scene other = preview();
   other.seed = 2;
   EXPECT_NE(run(other).png, one.png);
+}
+
+// The layout key follows what the stages before the simulation read: not
+// the physics or the backends' keys; a run that reuses an
+// earlier run's layout makes the bytes a fresh run makes.
+TEST(Pipeline, AReusedLayoutMakesTheSamePicture) {
+  const Scene base = preview();
+  Scene physics = base;
+  physics.physics.friction = 0.9;
+  physics.lattice.runout_px = {0, 0, 1, 1};
+  EXPECT_EQ(layout_key(physics), layout_key(base));
+  for (auto change : std::vector<std::function<void(Scene&)>>{
+           [](Scene& s) { s.segment.semi_major_min += 5; }, [](Scene& s) { s.init.dominant_share = 0.7; },
+           [](Scene& s) { s.layout_seed = 3; }, [](Scene& s) { s.window.width += 10; },
+           [](Scene& s) { s.grains.proportions[0] += 0.1; }}) {
+    Scene other = base;
+    change(other);
+    EXPECT_NE(layout_key(other), layout_key(base));
+  }
+  RunResult first = run(base);
+  RunOptions opt;
+  opt.prepared = first.prepared;
+  RunResult again = run_pipeline(physics, *make_simulator(physics), opt);
+  EXPECT_EQ(again.png, run(physics).png);
+  EXPECT_EQ(again.stats["timing"]["layout_reused"], true);
+  EXPECT_FALSE(first.stats["timing"].contains("layout_reused"));
 }
 
 TEST(Pipeline, PhysicsSeedAloneKeepsTheComposition) {

@@ -1,6 +1,7 @@
 #include "src/studio/api.h"
 
 #include <filesystem>
+#include <mutex>
 
 
 #include "src/image_io.h"
@@ -148,7 +149,23 @@ Reply preview(const std::string& body, const std::string& root, double scale) {
   Scene s = scaled(scene_from_request(body, root), scale);
   s.mode = Mode::Lattice;  // a preview is always the lattice's; the DEM is the final render
   auto sim = make_simulator(s);
-  RunResult run = run_pipeline(s, *sim, RunOptions{});
+  // While a physics key is dragged, the layout (paper §4-6) is the last
+  // preview's: only the fall is run again.
+  static std::mutex kept_mutex;
+  static std::string kept_key;
+  static std::shared_ptr<const Prepared> kept;
+  const std::string key = layout_key(s);
+  RunOptions opt;
+  {
+    std::lock_guard lock(kept_mutex);
+    if (key == kept_key) opt.prepared = kept;
+  }
+  RunResult run = run_pipeline(s, *sim, opt);
+  {
+    std::lock_guard lock(kept_mutex);
+    kept_key = key;
+    kept = run.prepared;
+  }
   Reply r;
   r.content_type = "image/png";
   r.body.assign(reinterpret_cast<const char*>(run.png.data()), run.png.size());

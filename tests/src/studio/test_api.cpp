@@ -70,6 +70,20 @@ TEST(StudioApi, APreviewIsTheLatticesEvenForADemScene) {
   EXPECT_EQ(json::parse(r.headers.at("X-Sandpic-Stats"))["mode"], "lattice");
 }
 
+// While only physics changes, a preview reuses the last preview's layout and
+// makes the bytes a fresh preview makes; a layout change prepares anew.
+TEST(StudioApi, APhysicsChangeReusesTheLayout) {
+  preview(R"({"seed": 4, "physics": {"friction": 0.3}})", ".", 0.2);
+  const Reply dragged = preview(R"({"seed": 4, "physics": {"friction": 0.8}})", ".", 0.2);
+  EXPECT_EQ(json::parse(dragged.headers.at("X-Sandpic-Stats"))["timing"]["layout_reused"], true);
+  const Reply moved = preview(R"({"seed": 4, "segment": {"semi_major_min": 50}, "physics": {"friction": 0.8}})", ".", 0.2);
+  EXPECT_FALSE(json::parse(moved.headers.at("X-Sandpic-Stats"))["timing"].contains("layout_reused"));
+  preview(R"({"seed": 9})", ".", 0.2);  // another layout: the next one is fresh
+  const Reply fresh = preview(R"({"seed": 4, "physics": {"friction": 0.8}})", ".", 0.2);
+  EXPECT_FALSE(json::parse(fresh.headers.at("X-Sandpic-Stats"))["timing"].contains("layout_reused"));
+  EXPECT_EQ(dragged.body, fresh.body);
+}
+
 TEST(StudioApi, SameSceneAndSeedSameBytes) {
   const std::string body = R"({"seed": 7, "physics": {"friction": 0.6}})";
   const Reply a = preview(body, ".", 0.2), b = preview(body, ".", 0.2);
