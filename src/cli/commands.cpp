@@ -1,6 +1,7 @@
 #include "src/cli/commands.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -29,6 +30,7 @@
 #include "src/segment/sketch.h"
 #include "validate/metrics/compare.h"
 #include "validate/metrics/grain_compare.h"
+#include "validate/bench/falling_sand.h"
 #include "validate/bench/friction_bench.h"
 #include "validate/bench/layer_bench.h"
 #include "validate/metrics/silhouette.h"
@@ -224,25 +226,43 @@ struct SceneCommand {
 struct BenchCommand {
   SceneOptions scene;
   int runs = 9;
+  bool peer = false;
   void add_to(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("bench", "time the pipeline on a scene: medians of repeated runs");
     scene.add_to(cmd);
     scene.check_unread(cmd);
     cmd->add_option("--runs", runs, "timed runs (after one warm-up run)")->check(CLI::Range(1, 1000));
+    cmd->add_flag("--peer", peer,
+                  "also time a classic falling-sand automaton (one class, a fixed 45° rule) on the same grid and "
+                  "grains, run by run beside the lattice");
     cmd->callback([this] { run(); });
   }
   void run() {
     Scene s = scene.build();
+    if (peer && s.mode != Mode::Lattice) throw InputError("--peer: the peer is a lattice's; the scene's mode is not lattice");
     auto threads = limit_threads(scene.threads);
     auto sim = make_simulator(s);
     std::vector<std::string> keys = {"init_s", "segment_s", "order_s", "simulate_s", "render_s", "encode_s", "total_s"};
     std::map<std::string, std::vector<double>> t;
     int64_t grains = 0;
+    std::vector<int32_t> columns;
+    if (peer) columns = entry_columns(s, prepare(s));
+    FallingSand sand;
     for (int i = 0; i <= runs; ++i) {
       RunResult r = run_pipeline(s, *sim, RunOptions{});
       grains = r.stats["grains"]["total"];
+      double peer_s = 0;
+      if (peer) {
+        const auto start = std::chrono::steady_clock::now();
+        sand = falling_sand(s.window.width, s.window.height, columns, kPeerGrainsPerTick, s.physics_rng());
+        peer_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      }
       if (i == 0) continue;  // warm-up: page faults, TBB start-up
       for (auto& k : keys) t[k].push_back(r.stats["timing"][k].get<double>());
+      if (peer) {
+        t["peer_s"].push_back(peer_s);
+        t["ratio"].push_back(peer_s / r.stats["timing"]["simulate_s"].get<double>());
+      }
     }
     std::printf("sandpic bench: %s, %dx%d window, %lld grains, %d runs\n", s.mode == Mode::Lattice ? "lattice" : "dem",
                 s.window.width, s.window.height, (long long)grains, runs);
@@ -253,7 +273,20 @@ struct BenchCommand {
                   *std::min_element(t[k].begin(), t[k].end()), *std::max_element(t[k].begin(), t[k].end()),
                   100 * median(t[k]) / total);
     std::printf("grains per second (simulate): %.3g\n", double(grains) / median(t["simulate_s"]));
+    if (!peer) return;
+    std::printf("peer: a classic falling-sand automaton on the same %dx%d grid, the same grains entering at the top\n"
+                "at the lattice's drop columns in falling order, %d a tick; one class, a fixed 45° rule\n"
+                "(%lld ticks, %lld cells fallen, %lld grains at rest, %lld lost)\n",
+                s.window.width, s.window.height, kPeerGrainsPerTick, (long long)sand.ticks, (long long)sand.moves,
+                (long long)sand.settled, (long long)sand.lost);
+    std::printf("%-12s %10.4f %10.4f %10.4f\n", "peer_s", median(t["peer_s"]),
+                *std::min_element(t["peer_s"].begin(), t["peer_s"].end()),
+                *std::max_element(t["peer_s"].begin(), t["peer_s"].end()));
+    std::printf("peer_s / simulate_s, run by run: median %.1f (min %.1f, max %.1f)\n", median(t["ratio"]),
+                *std::min_element(t["ratio"].begin(), t["ratio"].end()),
+                *std::max_element(t["ratio"].begin(), t["ratio"].end()));
   }
+  static constexpr int kPeerGrainsPerTick = 8;
 };
 
 // paper Fig. 12: the DEM's layer models side by side at several grain counts.

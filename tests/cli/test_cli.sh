@@ -124,6 +124,13 @@ expect 0 "bench" -- "$BIN" bench --runs 2 --scale 0.2
 for k in init_s segment_s simulate_s render_s total_s "grains per second"; do
   if grep -q "$k" "$T/out"; then ok; else bad "bench output lacks $k"; fi
 done
+# Beside the peer falling-sand automaton: its time and the ratio, every grain at rest.
+expect 0 "bench --peer" -- "$BIN" bench --runs 2 --scale 0.2 --peer
+for k in peer_s "peer_s / simulate_s" "14000 grains at rest, 0 lost"; do
+  if grep -q "$k" "$T/out"; then ok; else bad "bench --peer output lacks $k"; fi
+done
+expect 2 "bench --peer dem" -- "$BIN" bench --runs 1 --scale 0.2 --peer --mode dem
+one_line; err_has "--peer"
 
 # The printed default scene is a complete scene file.
 expect 0 "scene" -- "$BIN" scene
