@@ -112,7 +112,7 @@ class DemRun {
   // spheres.
   std::vector<int32_t> dynamic_, statics_, still_statics_, fixed_spheres_;
   double buried_px_ = 0;  // a sphere of fixed_spheres_ this far under H_s leaves for the ground
-  Arrivals arrivals_;
+  Arrivals arrivals_{16 / s_.dem.release_rate};  // about 16 grains leave per bucket
   std::vector<double> due_;     // per falling-order index: when the grain was due to become a body
   double late_sum_ = 0, late_max_ = 0;  // how much later than due grains became bodies (crowding)
   std::vector<float> landed_;   // tops of slow dynamic grains and static bodies, per column, this cycle

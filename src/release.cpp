@@ -62,8 +62,8 @@ void Arrivals::push(const Arrival& a) {
   ++size_;
   const int64_t b = bucket_s_ > 0 ? bucket(a.time) : open_;
   if (b <= open_) {
-    heap_.push_back(a);
-    std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
+    // Into its place among the open bucket's, latest first.
+    open_list_.insert(std::upper_bound(open_list_.begin(), open_list_.end(), a, std::greater<>{}), a);
     return;
   }
   const size_t at = size_t(b - base_);
@@ -82,30 +82,29 @@ void Arrivals::push(const Arrival& a) {
   first_[at] = slot;
 }
 
-// The heap empty: open the next bucket that has arrivals.
+// The open bucket empty: open the next that has arrivals.
 const Arrival& Arrivals::top() {
-  while (heap_.empty() && size_ > 0) {
+  while (open_list_.empty() && size_ > 0) {
     size_t at = size_t(open_ - base_) + 1;
     while (first_[at] < 0) ++at;  // size_ > 0: some later bucket has arrivals
     open_ = base_ + int64_t(at);
     for (int32_t i = first_[at]; i >= 0; i = next_[size_t(i)]) {
-      heap_.push_back(pool_[size_t(i)]);
+      open_list_.push_back(pool_[size_t(i)]);
       free_.push_back(i);
     }
     first_[at] = -1;
-    std::make_heap(heap_.begin(), heap_.end(), std::greater<>{});
+    std::sort(open_list_.begin(), open_list_.end(), std::greater<>{});
     if (2 * at > first_.size()) {  // drop the buckets behind, now and then
       first_.erase(first_.begin(), first_.begin() + std::ptrdiff_t(at));
       base_ = open_;
     }
   }
-  return heap_.front();
+  return open_list_.back();
 }
 
 void Arrivals::pop() {
   top();
-  std::pop_heap(heap_.begin(), heap_.end(), std::greater<>{});
-  heap_.pop_back();
+  open_list_.pop_back();
   --size_;
 }
 

@@ -44,12 +44,13 @@ struct Arrival {
   bool operator>(const Arrival& o) const { return time != o.time ? time > o.time : order > o.order; }
 };
 
-// The grains on their way, earliest first (ties in falling order). With a
-// bucket width, a calendar queue: arrivals wait unsorted in buckets of that
-// many seconds and only the earliest bucket is a heap, so a pop sifts
-// through the few grains due together, not through every grain in flight
-// (the lattice keeps tens of thousands in flight at the paper's scale).
-// Without one (0), a plain heap. The order is exact either way.
+// The grains on their way, earliest first (ties in falling order): a
+// calendar queue. Arrivals wait unsorted in buckets of `bucket_s` seconds;
+// only the earliest bucket is sorted, when it opens, so a landing takes the
+// next of the few grains due together instead of sifting through every
+// grain in flight (the lattice keeps tens of thousands in flight at the
+// paper's scale). The order is exact whatever the width; 0 keeps one sorted
+// list (for a few arrivals only).
 class Arrivals {
  public:
   explicit Arrivals(double bucket_s = 0) : bucket_s_(bucket_s) {}
@@ -63,9 +64,9 @@ class Arrivals {
   int64_t bucket(double time) const;
   double bucket_s_;
   size_t size_ = 0;
-  int64_t open_ = 0;                 // the bucket the heap holds (and any before it)
+  int64_t open_ = 0;                 // the bucket open_list_ holds (and any before it)
   int64_t base_ = 0;                 // the bucket first_[0] stands for
-  std::vector<Arrival> heap_;        // std::greater<>: the earliest at the front
+  std::vector<Arrival> open_list_;   // the open bucket's, latest first
   std::vector<int32_t> first_;       // per bucket from base_ on: its first arrival in pool_, -1 none
   std::vector<Arrival> pool_;        // arrivals waiting in later buckets, each bucket a list
   std::vector<int32_t> next_;        // the next arrival of the same bucket, -1 none
