@@ -3,8 +3,10 @@
 // automaton of pixel sand games. Every grain is one cell of a grid the size
 // of the window; each tick, each moving grain falls one cell, straight down if
 // that cell is free, else diagonally down to a free side (which side first by
-// chance), else it rests for good (cells below only ever fill). One class, a
-// fixed 45° angle of repose. Grains enter at the top row at the columns the
+// chance); a grain with the floor, a wall or resting grains in all three
+// cells below rests for good (resting cells never empty); one held up by a
+// grain still moving tries again next tick. One class, a fixed 45° angle of
+// repose. Grains enter at the top row at the columns the
 // lattice drops them from, in falling order, a few each tick.
 #include <cstdint>
 #include <span>

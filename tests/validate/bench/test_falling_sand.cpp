@@ -21,6 +21,16 @@ TEST(FallingSand, OnePointPilesAtFortyFiveDegreesAndKeepsEveryGrain) {
   class_map.setTo(0, sand.grid);
   EXPECT_NEAR(test::heap_angle_deg(test::column_heights(class_map)), 45, 3);
 
+  // A stream as wide as an outlet: grains side by side hold each other up
+  // for a tick, not for good (they would stand in towers).
+  std::vector<int32_t> wide;
+  for (int i = 0; i < 20000; ++i) wide.push_back(180 + (i * 7) % 40);
+  const FallingSand stream = falling_sand(400, 300, wide, 8, 1);
+  EXPECT_EQ(stream.settled, 20000);
+  cv::Mat stream_map(stream.grid.size(), CV_8U, cv::Scalar(kNoSand));
+  stream_map.setTo(0, stream.grid);
+  EXPECT_NEAR(test::heap_angle_deg(test::column_heights(stream_map)), 45, 3);
+
   const FallingSand full = falling_sand(20, 10, std::vector<int32_t>(500, 10), 8, 1);
   EXPECT_EQ(full.settled + full.lost, 500);
   EXPECT_GT(full.lost, 0);
