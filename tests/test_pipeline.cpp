@@ -35,6 +35,11 @@ TEST(Pipeline, DefaultSceneAtQuarterScaleAccountsForEveryGrain) {
   EXPECT_EQ(r.stats["grains"]["released"], r.stats["grains"]["total"]);
   for (const char* k : {"init_s", "segment_s", "simulate_s", "render_s", "total_s"})
     EXPECT_TRUE(r.stats["timing"].contains(k)) << k;
+  // The stages are disjoint parts of the whole (frames_s is a part of simulate_s).
+  double sum = 0;
+  for (const auto& [k, v] : r.stats["timing"].items())
+    if (k != "total_s" && k != "frames_s") sum += v.get<double>();
+  EXPECT_LE(sum, r.stats["timing"]["total_s"].get<double>() + 1e-9);
   EXPECT_EQ(r.stages.size(), 5u);
 }
 
