@@ -28,9 +28,9 @@ export function instrument() {
         try {
           const t = JSON.parse(res.headers.get('X-Sandpic-Stats')).timing;
           rec.lattice_ms = 1000 * t.total_s;
-          // simulate_s counts the layout made before the fall (init, segment, order) too.
+          // The layout made before the fall (init, segment, order; 0 when reused) and the fall.
           rec.prepare_ms = 1000 * (t.init_s + t.segment_s + t.order_s);
-          rec.simulate_ms = 1000 * t.simulate_s - rec.prepare_ms;
+          rec.simulate_ms = 1000 * t.simulate_s;
         } catch (_) { /* no stats */ }
       }
       // Counted out once the body is read: the page reads every answer.
