@@ -80,13 +80,11 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
   cv::Mat figures = load_figures(s);
   timing["load_s"] = clock.lap();
   std::shared_ptr<const Prepared> prepared = opt.prepared;
-  if (prepared) {
+  if (prepared)
     for (const char* k : {"init_s", "segment_s", "order_s"}) timing[k] = 0.0;
-    clock.lap();
-  } else {
+  else
     prepared = std::make_shared<const Prepared>(prepare(s, &timing));
-    clock.lap();  // timed by prepare itself: not a part of simulate_s
-  }
+  clock.lap();  // reused, or timed by prepare itself: not a part of simulate_s
   const auto& [init, seg, order] = *prepared;
 
   Progress progress(opt.progress, opt.fraction, opt.cancel);
