@@ -480,8 +480,16 @@ struct CompareCommand {
     // grain's size in pixels: the scene's own diameters at any scale).
     double big = 0;
     for (int k = 0; k < kClasses; ++k) big = std::max(big, grain_diameter_px(s, k));
-    j["scene_slope_deg"] = {scene_slope_deg(silhouette(decode_classes(ia, s.grains.colors)), 8 * big),
-                            scene_slope_deg(silhouette(decode_classes(ib, s.grains.colors)), 8 * big)};
+    const std::vector<double> sa = silhouette(decode_classes(ia, s.grains.colors)),
+                              sb = silhouette(decode_classes(ib, s.grains.colors));
+    j["scene_slope_deg"] = {scene_slope_deg(sa, 8 * big), scene_slope_deg(sb, 8 * big)};
+    // And as one heap: verify-dem's heap angle (null where there is no heap
+    // to fit, as in a picture of many mountains it may still fit one).
+    auto angle = [](const std::vector<double>& h) {
+      const double a = heap_angle_deg(h);
+      return std::isfinite(a) ? ordered_json(a) : ordered_json(nullptr);
+    };
+    j["heap_angle_deg"] = {angle(sa), angle(sb)};
     if (!diff_path.empty()) write_png(diff_path, difference_picture(ia, ib));
     print(c, j);
     // psnr_db is +inf for identical pictures: above every bound.
@@ -505,6 +513,13 @@ struct CompareCommand {
     }
     std::printf("ssim               %.6f\n", c.ssim);
     std::printf("scene_slope_deg    %.2f  %.2f\n", j["scene_slope_deg"][0].get<double>(), j["scene_slope_deg"][1].get<double>());
+    auto deg = [](const ordered_json& v) -> std::string {
+      if (v.is_null()) return "none";
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.2f", v.get<double>());
+      return buf;
+    };
+    std::printf("heap_angle_deg     %s  %s\n", deg(j["heap_angle_deg"][0]).c_str(), deg(j["heap_angle_deg"][1]).c_str());
     if (std::isfinite(c.psnr_db))
       std::printf("psnr_db            %.3f\n", c.psnr_db);
     else

@@ -23,14 +23,16 @@ struct VerifyCommand {
   void add_to(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "verify-dem", "check the DEM against closed-form answers and itself; writes report.json and report.html");
-    cmd->add_flag("--quick", quick, "piles of a few hundred grains, looser tolerances (about 7.5 minutes on 2 cores; ctest runs it)");
+    cmd->add_flag("--quick", quick, "piles of a few hundred grains, looser tolerances (2-4 minutes on 2 cores; ctest runs it)");
     cmd->add_option("--out", out, "folder for report.json and report.html")->required();
     cmd->add_option("--only", only, "case ids, comma-separated (settling, restitution, incline, rolling, notch, heap, "
-                                    "creep, layers, step, engines)");
-    cmd->add_option("--set", sets, "KEY=VALUE on every pile case's scene (heap, creep, layers, step), as render's "
+                                    "creep, layers, step, engines, engine-piles: the full run only)");
+    cmd->add_option("--set", sets, "KEY=VALUE on every pile case's scene (heap, creep, layers, step, engine-piles), as render's "
                                    "--set; repeatable; not the keys the cases vary (layers, friction, rolling "
                                    "resistance, seeds)");
-    cmd->add_option("--layers", layers, "the layer models the layers case holds against all-dynamic, comma-separated")
+    cmd->add_option("--layers", layers, "the layer models held against all-dynamic, comma-separated: the layers case "
+                                        "takes each, heap, step and engine-piles three if listed; 'all-dynamic' alone: "
+                                        "no comparison, the layers case not run")
         ->capture_default_str();
     cmd->add_option("--threads", threads, "worker threads (0: all cores); the results do not depend on it")
         ->check(CLI::Range(0, 1024));
@@ -64,6 +66,7 @@ struct VerifyCommand {
                   bad ? (std::to_string(bad) + " of " + std::to_string(c.checks.size()) + " checks fail").c_str() : "pass",
                   c.seconds);
     }
+    for (const auto& [id, why] : report.not_run) std::printf("%-12s %s\n", id.c_str(), why.c_str());
     std::printf("sandpic verify-dem%s: %zu cases, %d failed, %.0f s; %s/report.html\n", quick ? " --quick" : "",
                 report.cases.size(), failed, report.seconds, out.c_str());
     if (failed) throw CheckFailed(std::to_string(failed) + " of " + std::to_string(report.cases.size()) +

@@ -40,7 +40,7 @@ else bad "--set physics_seed=2 after --seed 1 was not the picture of physics see
 
 # compare: JSON with every measure; a picture with itself is identical.
 expect 0 "compare" -- "$BIN" compare "$T/a.png" "$T/c.png" --json
-for k in '"ssim"' '"scene_slope_deg"' '"psnr_db"' '"silhouette_error"' '"composition_error"' '"composition_error_per_band"' '"ssim_blurred"'; do
+for k in '"ssim"' '"scene_slope_deg"' '"heap_angle_deg"' '"psnr_db"' '"silhouette_error"' '"composition_error"' '"composition_error_per_band"' '"ssim_blurred"'; do
   if grep -q -- "$k" "$T/out"; then ok; else bad "compare JSON lacks $k: $(cat "$T/out")"; fi
 done
 if grep -q '"identical": false' "$T/out"; then ok; else bad "two seeds compared as identical"; fi
@@ -203,6 +203,8 @@ if [ "$BULLET" = with-bullet ]; then
   if grep -q '"pass": true' "$T/vd/report.json" && grep -q "<svg" "$T/vd/report.html"; then ok; else bad "verify-dem report: $(head -c 400 "$T/vd/report.json")"; fi
   expect 2 "verify-dem bad case" -- "$BIN" verify-dem --out "$T/vd2" --only nonsense
   one_line; err_has "nonsense"; absent "$T/vd2"
+  expect 2 "verify-dem --quick of a full-run case" -- "$BIN" verify-dem --quick --out "$T/vd2" --only restitution,engine-piles
+  one_line; err_has "engine-piles"; absent "$T/vd2"
   # --set: a scene key on every pile run, never one the cases vary, checked before anything runs.
   expect 2 "verify-dem --set of a varied key" -- "$BIN" verify-dem --out "$T/vd3" --only heap --set physics.friction=0.2
   err_has "vary 'physics.friction'"
@@ -211,6 +213,8 @@ if [ "$BULLET" = with-bullet ]; then
   absent "$T/vd3"
   expect 2 "verify-dem --layers of no model" -- "$BIN" verify-dem --out "$T/vd3" --only layers --layers three,sand
   one_line; err_has "sand"; absent "$T/vd3"
+  expect 2 "verify-dem layers case with no model to compare" -- "$BIN" verify-dem --out "$T/vd3" --only layers --layers all-dynamic
+  one_line; err_has "layers"; absent "$T/vd3"
   # paper Fig. 12: the layer models side by side, as a table, CSV and plot.
   expect 0 "bench-layers" -- "$BIN" bench-layers "${TINY[@]}" --grains 100,200 --seeds 1,2 --all-dynamic-max 100 \
     --csv "$T/fig12.csv" --plot "$T/fig12.png"

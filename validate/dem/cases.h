@@ -38,5 +38,7 @@ VerifyCase step(const VerifyOptions& opt);
 // The Bullet DEM against LAMMPS (physics/lammps_deck.h) from one placed
 // configuration: a column of grains collapsing in the water.
 VerifyCase engines(const VerifyOptions& opt);
+// And on whole piles, each engine pouring its own (full run only).
+VerifyCase engine_piles(const VerifyOptions& opt);
 
 }  // namespace sandpic::verify

@@ -1,155 +1,17 @@
 // verify-dem's pile cases: heaps poured from a point and the default scene
-// at a small scale, through the pipeline (src/pipeline.h) with the DEM,
-// several at once on TBB's threads (each run is a world of its own, so the
-// results do not depend on the thread count).
+// at a small scale (validate/dem/pile_runs.h), the DEM against itself.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
-#include <mutex>
 
-#include <tbb/parallel_for.h>
-
-#include "physics/dem_params.h"
-#include "physics/dem_simulator.h"
 #include "physics/outline_watch.h"
-#include "src/pipeline.h"
-#include "src/scene_file.h"
-#include "src/water.h"
 #include "validate/dem/cases.h"
-#include "validate/bench/friction_bench.h"
+#include "validate/dem/pile_runs.h"
 #include "validate/metrics/silhouette.h"
 #include "validate/metrics/statistics.h"
 
 namespace sandpic::verify {
-namespace {
 
-
-// What the piles are in each mode.
-struct Plan {
-  Scene heap;                          // a heap poured from a point
-  std::vector<uint64_t> seeds;         // physics seeds
-  double scene_scale;                  // the default scene's scale for the layers case
-  double scene_region = 0;             // and its region's height (px; 0: as scaled)
-  double spread_deg, layers_deg;       // tolerances: seed spread, three vs all-dynamic slope
-  double default_low = 25, default_high = 40;  // the default's heap angle: sand's
-  std::vector<double> friction, rolling;
-};
-
-Plan plan(const VerifyOptions& opt) {
-  Plan p;
-  p.heap = pile_scene();  // 300×120 px, a 12 px region: 3,600 grains
-  p.seeds = {1, 2, 3};
-  p.scene_scale = 0.1;   // 3,500 grains
-  p.spread_deg = 2;
-  p.layers_deg = 1.5;
-  p.friction = {0.1, 0.4, 0.9};
-  p.rolling = {0, 0.3, 0.6};
-  if (opt.quick) {  // a few hundred grains: looser tolerances
-    p.heap.window = {120, 60};
-    p.heap.region.height = 4;  // 480 grains
-    p.heap.segment.ellipses = {EllipseSpec{60, 2, 60, 2, 0}};
-    p.heap.init.cell_height = 4;
-    p.seeds = {1, 2};
-    p.scene_region = 6;  // 600 grains (the scale's smallest: init.row_height_min)
-    // A heap this small scatters: over physics seeds 1-8 the default's
-    // angle had a standard deviation of 3.0-3.2° (26.7-37.6°), and two
-    // seeds' spread |a - b|/√2 passes 1.96 σ = 6.3° one time in twenty.
-    p.spread_deg = 6.5;
-    p.layers_deg = 4;
-    p.default_high = 45;  // a heap 15 px high stands steeper: 41° where 3,600 grains stand at 31°
-    p.friction = {0.1, 0.9};
-    // And the default. Without rolling resistance a heap of a few hundred
-    // round grains spreads to the walls of this window (3.5° at friction
-    // 0.1): no heap angle to compare; the full run has μ_r 0 in a wider one.
-    p.rolling = {0.3};
-  }
-  // Poured, not dropped: the release lasts twice the slowest grain's fall,
-  // so the heap grows under a steady stream. At the default release rate
-  // all 480 grains of the quick heap were in the water at once and landed
-  // as two slugs (fast classes, then slow): seeds stood up to 10° apart and
-  // contacts overlapped by 0.048 diameters; poured, at most 1.6° and 0.025.
-  const Water w = water_model(p.heap);
-  const double slowest = *std::min_element(w.terminal_px_s.begin(), w.terminal_px_s.end());
-  const double fall_s = (p.heap.window.height - p.heap.region.height) / slowest;
-  p.heap.dem.release_rate = double(p.heap.window.width) * p.heap.region.height / (2 * fall_s);
-  return p;
-}
-
-struct Run {
-  Scene scene;
-  cv::Mat class_map, picture;
-  ordered_json stats;
-  double simulate_s = 0;
-};
-
-// Runs already made in this process, by scene: the step case's heaps at the
-// default step are the heap case's default heaps, run once (a scene and its
-// seeds give the same bytes every time).
-struct RunCache {
-  std::mutex m;
-  std::map<std::string, Run> runs;
-};
-RunCache& run_cache() {
-  static RunCache c;
-  return c;
-}
-
-// Every scene through the pipeline with the DEM, in parallel; results in order.
-std::vector<Run> run_all(std::vector<Scene> scenes, const VerifyOptions& opt, const std::string& what) {
-  std::vector<Run> runs(scenes.size());
-  std::vector<std::string> keys(scenes.size());
-  std::vector<size_t> todo;
-  RunCache& cache = run_cache();
-  for (size_t i = 0; i < scenes.size(); ++i) {
-    for (const std::string& a : opt.sets) apply_setting(scenes[i], a);
-    keys[i] = to_json(scenes[i]).dump();
-    std::lock_guard<std::mutex> lock(cache.m);
-    if (auto it = cache.runs.find(keys[i]); it != cache.runs.end()) runs[i] = it->second;
-    else todo.push_back(i);
-  }
-  std::atomic<int> done{int(scenes.size() - todo.size())};
-  tbb::parallel_for(size_t(0), todo.size(), [&](size_t k) {
-    const size_t i = todo[k];
-    auto sim = make_dem_simulator();
-    RunResult r = run_pipeline(scenes[i], *sim, RunOptions{});
-    runs[i] = {scenes[i], r.class_map, r.picture, r.stats, r.stats["timing"]["simulate_s"].get<double>()};
-    {
-      std::lock_guard<std::mutex> lock(cache.m);
-      cache.runs.emplace(keys[i], runs[i]);
-    }
-    opt.log(what + ": " + std::to_string(++done) + "/" + std::to_string(scenes.size()) + " runs");
-  });
-  return runs;
-}
-
-// The mean silhouette error between every pair of runs (the floor).
-double floor_error(const std::vector<const Run*>& runs) {
-  double sum = 0;
-  int n = 0;
-  for (size_t i = 0; i < runs.size(); ++i)
-    for (size_t j = i + 1; j < runs.size(); ++j) sum += silhouette_error(runs[i]->class_map, runs[j]->class_map), ++n;
-  return n ? sum / n : NAN;
-}
-
-Scene with(Scene s, Layers l, double mu, double mr, uint64_t seed) {
-  s.mode = Mode::Dem;
-  s.dem.layers = l;
-  s.physics.friction = mu;
-  s.dem.rolling_resistance = mr;
-  s.physics_seed = seed;
-  return s;
-}
-
-double heap_angle(const Run& r) { return heap_angle_deg(silhouette(r.class_map)); }
-
-// The scene slope, smoothed over 8 large-grain diameters.
-double slope(const Run& r) {
-  const auto radii = dem_radii(r.scene);
-  return scene_slope_deg(silhouette(r.class_map), 16 * *std::max_element(radii.begin(), radii.end()));
-}
-
-}  // namespace
 
 // Case 5: the heap angle against sliding friction and rolling resistance,
 // all-dynamic and three-layer, over physics seeds.
@@ -163,23 +25,25 @@ VerifyCase heap(const VerifyOptions& opt) {
                    fmt("%.1f", p.layers_deg) + "°, 2 seed spreads), and the default lies in " +
                    fmt("%.0f", p.default_low) + "–" + fmt("%.0f", p.default_high) +
                    "° (real sand: about 25° rounded to 40° angular)"};
+  std::vector<Layers> models = {Layers::AllDynamic};
+  for (Layers l : compared_models(opt)) models.push_back(l);
   std::vector<double> rolling = p.rolling;
   if (std::find(rolling.begin(), rolling.end(), default_mr) == rolling.end()) rolling.push_back(default_mr);
   std::sort(rolling.begin(), rolling.end());
   std::vector<Scene> scenes;
-  for (Layers l : {Layers::AllDynamic, Layers::Three})
+  for (Layers l : models)
     for (double mu : p.friction)
       for (double mr : rolling)
         for (uint64_t seed : p.seeds) scenes.push_back(with(p.heap, l, mu, mr, seed));
   if (std::find(p.friction.begin(), p.friction.end(), default_mu) == p.friction.end())
-    for (Layers l : {Layers::AllDynamic, Layers::Three})
+    for (Layers l : models)
       for (uint64_t seed : p.seeds) scenes.push_back(with(p.heap, l, default_mu, default_mr, seed));
   const std::vector<Run> runs = run_all(scenes, opt, "heap");
   // angle[layers][mu][mr] over seeds
   std::map<Layers, std::map<double, std::map<double, std::vector<double>>>> angle;
   for (const Run& r : runs)
     angle[r.scene.dem.layers][r.scene.physics.friction][r.scene.dem.rolling_resistance].push_back(heap_angle(r));
-  for (Layers l : {Layers::AllDynamic, Layers::Three}) {
+  for (Layers l : models) {
     const std::string name = layers_name(l);
     VerifyPlot plot{"Heap angle, " + name, "rolling resistance μ_r", "heap angle (deg)", {}};
     for (auto& [mu, by_mr] : angle[l]) {
@@ -240,6 +104,8 @@ VerifyCase heap(const VerifyOptions& opt) {
       c.checks.push_back(within("three-layer against all-dynamic, μ " + fmt("%.1f", mu) + ", μ_r " + fmt("%.2f", mr),
                                 mean(a), mean(ref), std::max(p.layers_deg, 2 * std::max(spread(a), spread(ref))), "°"));
     }
+  for (Layers l : models)
+    if (l != Layers::AllDynamic) c.checks.push_back(work_check(layers_name(l), of(runs, l), of(runs, Layers::AllDynamic)));
   for (const Run& r : runs)
     if (r.scene.physics_seed == p.seeds.front() && r.scene.physics.friction == default_mu &&
         r.scene.dem.rolling_resistance == default_mr)
@@ -318,9 +184,7 @@ VerifyCase layers(const VerifyOptions& opt) {
                    "max(" + fmt("%.1f", p.layers_deg) + "°, 2 seed spreads) of all-dynamic's, and the silhouette error "
                    "against all-dynamic (same seed) at most 1.25× all-dynamic's own seed-to-seed floor (paper Fig. 13: "
                    "BCRE and three layers alike)"};
-  Scene base;
-  apply_scale(base, p.scene_scale);
-  if (p.scene_region > 0) base.region.height = p.scene_region;
+  const Scene base = small_default_scene(p);
   std::vector<Layers> models = {Layers::AllDynamic};
   for (Layers l : opt.layer_models)
     if (l != Layers::AllDynamic && std::find(models.begin(), models.end(), l) == models.end()) models.push_back(l);
@@ -356,6 +220,7 @@ VerifyCase layers(const VerifyOptions& opt) {
       err /= double(by[l].size());
       c.checks.push_back(at_most(name + ": silhouette error against all-dynamic over its floor (" + fmt("%.4f", floor) + ")",
                                  err / floor, 1.25, "×"));
+      c.checks.push_back(work_check(name, by[l], by[Layers::AllDynamic]));
     }
     for (const Run* r : {by[Layers::AllDynamic].front(), by[models[models.size() > 1 ? 1 : 0]].front()})
       c.pictures.emplace_back(layers_name(r->scene.dem.layers) + ", friction " + fmt("%.1f", mu) + ", seed " +
@@ -378,8 +243,10 @@ VerifyCase step(const VerifyOptions& opt) {
                    "silhouette error between the two steps (same seed) is at most 1.25× the larger seed-to-seed floor "
                    "(a better-converged solve lets a small heap grow by fewer, larger avalanches: its seeds differ more)"};
   const double step = Scene{}.dem.step_diameters;
+  std::vector<Layers> models = {Layers::AllDynamic};
+  for (Layers l : compared_models(opt)) models.push_back(l);
   std::vector<Scene> scenes;
-  for (Layers l : {Layers::AllDynamic, Layers::Three})
+  for (Layers l : models)
     for (double f : {1.0, 0.5})
       for (uint64_t seed : p.seeds) {
         Scene s = with(p.heap, l, Scene{}.physics.friction, Scene{}.dem.rolling_resistance, seed);
@@ -388,7 +255,7 @@ VerifyCase step(const VerifyOptions& opt) {
       }
   const std::vector<Run> runs = run_all(scenes, opt, "step");
   const size_t n = p.seeds.size();
-  for (size_t li = 0; li < 2; ++li) {
+  for (size_t li = 0; li < models.size(); ++li) {
     const Run* base = &runs[li * 2 * n];
     const Run* half = base + n;
     std::vector<double> a, b;
@@ -411,6 +278,8 @@ VerifyCase step(const VerifyOptions& opt) {
     c.notes.push_back(name + ": " + fmt("%.0f", base->simulate_s) + " s at the step, " + fmt("%.0f", half->simulate_s) +
                       " s at half of it (seed " + std::to_string(p.seeds.front()) + ")");
   }
+  for (size_t li = 1; li < models.size(); ++li)
+    c.checks.push_back(work_check(layers_name(models[li]), of(runs, models[li]), of(runs, Layers::AllDynamic)));
   return c;
 }
 

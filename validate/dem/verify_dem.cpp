@@ -21,13 +21,26 @@ std::string num(double v) {
   return buf;
 }
 
-using CaseFn = VerifyCase (*)(const VerifyOptions&);
-const std::vector<std::pair<std::string, CaseFn>>& cases() {
-  static const std::vector<std::pair<std::string, CaseFn>> all = {
+// Why a case does not run with these options ("" : it runs).
+std::string full_run_only(const VerifyOptions& opt) { return opt.quick ? "not run with --quick (the full run only)" : ""; }
+std::string needs_a_model(const VerifyOptions& opt) {
+  for (Layers l : opt.layer_models)
+    if (l != Layers::AllDynamic) return "";
+  return "not run: --layers names no model to hold against all-dynamic";
+}
+std::string always(const VerifyOptions&) { return ""; }
+
+struct Case {
+  std::string id;
+  VerifyCase (*run)(const VerifyOptions&);
+  std::string (*skipped)(const VerifyOptions&) = always;
+};
+const std::vector<Case>& cases() {
+  static const std::vector<Case> all = {
       {"settling", verify::settling}, {"restitution", verify::restitution}, {"incline", verify::incline},
       {"rolling", verify::rolling},   {"notch", verify::notch},             {"heap", verify::heap},
-      {"creep", verify::creep},       {"layers", verify::layers},           {"step", verify::step},
-      {"engines", verify::engines}};
+      {"creep", verify::creep},       {"layers", verify::layers, needs_a_model}, {"step", verify::step},
+      {"engines", verify::engines},   {"engine-piles", verify::engine_piles, full_run_only}};
   return all;
 }
 
@@ -68,7 +81,7 @@ bool VerifyReport::pass() const {
 const std::vector<std::string>& verify_case_ids() {
   static const std::vector<std::string> ids = [] {
     std::vector<std::string> v;
-    for (const auto& [id, fn] : cases()) v.push_back(id);
+    for (const Case& c : cases()) v.push_back(c.id);
     return v;
   }();
   return ids;
@@ -86,6 +99,13 @@ void check_case_ids(const std::vector<std::string>& only) {
       }() + ")");
 }
 
+// A case named by --only that these options leave out would run nothing.
+void check_skipped_cases(const VerifyOptions& opt) {
+  for (const std::string& id : opt.only)
+    for (const Case& c : cases())
+      if (c.id == id && !c.skipped(opt).empty()) throw InputError("--only " + id + ": " + c.skipped(opt));
+}
+
 void check_pile_settings(const std::vector<std::string>& sets) {
   static const char* varied[] = {"mode", "seed", "physics_seed", "dem.layers", "physics.friction", "dem.rolling_resistance"};
   for (const std::string& a : sets) {
@@ -101,6 +121,7 @@ void check_pile_settings(const std::vector<std::string>& sets) {
 
 void check_verify_options(const VerifyOptions& opt) {
   check_case_ids(opt.only);
+  check_skipped_cases(opt);
   check_pile_settings(opt.sets);
 }
 
@@ -113,11 +134,16 @@ VerifyReport run_verify_dem(const VerifyOptions& opt) {
   report.quick = opt.quick;
   report.sets = opt.sets;
   const auto start = std::chrono::steady_clock::now();
-  for (const auto& [id, fn] : cases()) {
+  for (const Case& cs : cases()) {
+    const std::string& id = cs.id;
     if (!opt.only.empty() && std::find(opt.only.begin(), opt.only.end(), id) == opt.only.end()) continue;
+    if (const std::string why = cs.skipped(opt); !why.empty()) {
+      report.not_run.emplace_back(id, why);
+      continue;
+    }
     opt.log(id + ": running");
     const auto t0 = std::chrono::steady_clock::now();
-    VerifyCase c = fn(opt);
+    VerifyCase c = cs.run(opt);
     c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     int failed = 0;
     for (const VerifyCheck& k : c.checks) failed += !k.pass();
@@ -130,6 +156,8 @@ VerifyReport run_verify_dem(const VerifyOptions& opt) {
 }
 
 ordered_json verify_json(const VerifyReport& r) {
+  ordered_json not_run = ordered_json::array();
+  for (const auto& [id, why] : r.not_run) not_run.push_back({{"id", id}, {"why", why}});
   ordered_json cs = ordered_json::array();
   for (const VerifyCase& c : r.cases) {
     ordered_json checks = ordered_json::array();
@@ -149,7 +177,8 @@ ordered_json verify_json(const VerifyReport& r) {
                   {"checks", checks},
                   {"notes", c.notes}});
   }
-  return {{"quick", r.quick}, {"set", r.sets}, {"pass", r.pass()}, {"seconds", r.seconds}, {"cases", cs}};
+  return {{"quick", r.quick}, {"set", r.sets},         {"pass", r.pass()},
+          {"seconds", r.seconds}, {"not_run", not_run}, {"cases", cs}};
 }
 
 }  // namespace sandpic

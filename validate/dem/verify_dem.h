@@ -9,6 +9,7 @@
 // the looser tolerances it states.
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -24,7 +25,9 @@ struct VerifyOptions {
   // "key=value" set on every pile case's scene (heap, creep, layers, step),
   // after the keys the cases vary (run_verify_dem refuses those).
   std::vector<std::string> sets;
-  // The layer models the layers case holds against all-dynamic.
+  // The layer models held against all-dynamic: the layers case takes each
+  // of them, heap, step and engine-piles three-layer if listed. Only
+  // all-dynamic: those run all-dynamic alone and the layers case not at all.
   std::vector<Layers> layer_models = {Layers::Three, Layers::Bcre};
   std::function<void(const std::string&)> log = [](const std::string&) {};
 };
@@ -66,12 +69,14 @@ struct VerifyReport {
   bool quick = false;
   std::vector<std::string> sets;  // VerifyOptions::sets
   std::vector<VerifyCase> cases;
+  std::vector<std::pair<std::string, std::string>> not_run;  // cases these options leave out: id, why
   double seconds = 0;
   bool pass() const;
 };
 
 // The case ids, in the order they run: settling, restitution, incline,
-// rolling, notch, heap, creep, layers, step, engines.
+// rolling, notch, heap, creep, layers, step, engines, engine-piles (the
+// full run only).
 const std::vector<std::string>& verify_case_ids();
 
 // Throws InputError (exit 2) for an id of opt.only that is not a case and

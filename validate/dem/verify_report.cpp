@@ -98,6 +98,7 @@ std::string verify_html(const VerifyReport& r) {
          html_number("%.0f", c.seconds) + "</td></tr>\n";
   }
   h += "</table>\n";
+  for (const auto& [id, why] : r.not_run) h += "<p>" + html_escape(id) + ": " + html_escape(why) + ".</p>\n";
   for (const VerifyCase& c : r.cases) {
     h += "<h2 id=\"" + c.id + "\">" + html_escape(c.title) + " <span class=\"" + (c.pass() ? "pass\">pass" : "fail\">fail") +
          "</span></h2>\n<p>Expected: " + html_escape(c.reference) + ".</p>\n<table><tr><th>check</th><th>measured</th><th>expected"
