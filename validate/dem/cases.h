@@ -40,5 +40,7 @@ VerifyCase step(const VerifyOptions& opt);
 VerifyCase engines(const VerifyOptions& opt);
 // And on whole piles, each engine pouring its own (full run only).
 VerifyCase engine_piles(const VerifyOptions& opt);
+// Where LAMMPS's lmp is not installed: a failing check in c saying so, and true.
+bool lammps_missing(VerifyCase& c);
 
 }  // namespace sandpic::verify

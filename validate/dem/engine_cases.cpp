@@ -141,6 +141,13 @@ cv::Mat draw(const std::vector<PlacedGrain>& g, const std::vector<Vec2>& p, cons
 
 }  // namespace
 
+bool lammps_missing(VerifyCase& c) {
+  if (!find_lmp(LammpsOptions{}).empty()) return false;
+  c.notes.push_back("LAMMPS's lmp is not installed (scripts/setup.sh installs it): nothing to compare with");
+  c.checks.push_back(at_most("lmp installed (1: missing)", 1, 0, ""));
+  return true;
+}
+
 VerifyCase engines(const VerifyOptions& opt) {
   const bool quick = opt.quick;
   const int nx = quick ? 10 : 24, ny = quick ? 8 : 16;
@@ -154,11 +161,7 @@ VerifyCase engines(const VerifyOptions& opt) {
                "seed spreads) of each other, the outline between the engines (mean |Δh| over the deposit) at most "
                "twice the larger engine's seed-to-seed floor; LAMMPS's deepest overlap at most 1% of a small "
                "diameter"};
-  if (find_lmp(LammpsOptions{}).empty()) {
-    c.notes.push_back("LAMMPS's lmp is not installed (scripts/setup.sh installs it): nothing to compare with");
-    c.checks.push_back(at_most("lmp installed (1: missing)", 1, 0, ""));
-    return c;
-  }
+  if (lammps_missing(c)) return c;
   Scene s;
   s.window = {1000, 300};
   const auto r = dem_radii(s);

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <map>
 
-#include "physics/lammps_simulator.h"
 #include "validate/dem/cases.h"
 #include "validate/dem/pile_runs.h"
 #include "validate/metrics/statistics.h"
@@ -28,8 +27,7 @@ struct Pile {
 void compare_engines(VerifyCase& c, const Pile& pile, const Plan& p, const VerifyOptions& opt) {
   const std::vector<double> friction = {0.1, 0.4, 0.9};
   const double mr = Scene{}.dem.rolling_resistance;
-  std::vector<Layers> models = {Layers::AllDynamic};
-  for (Layers l : compared_models(opt)) models.push_back(l);
+  const std::vector<Layers> models = pile_models(opt);
   std::vector<Scene> scenes;
   for (double mu : friction) {
     for (Layers l : models)
@@ -103,11 +101,7 @@ VerifyCase engine_piles(const VerifyOptions& opt) {
                    "and mean scene slope, all-dynamic (and three-layer if --layers lists it), within max(2°, 2 seed spreads) of LAMMPS's, "
                    "and the silhouette error between the engines (every seed against every seed) at most twice the "
                    "larger engine's seed-to-seed floor"};
-  if (find_lmp(LammpsOptions{}).empty()) {
-    c.notes.push_back("LAMMPS's lmp is not installed (scripts/setup.sh installs it): nothing to compare with");
-    c.checks.push_back(at_most("lmp installed (1: missing)", 1, 0, ""));
-    return c;
-  }
+  if (lammps_missing(c)) return c;
   compare_engines(c, {"heap", "heap angle", p.heap, heap_angle}, p, opt);
   compare_engines(c, {"default scene", "scene slope", small_default_scene(p), slope}, p, opt);
   return c;

@@ -25,8 +25,7 @@ VerifyCase heap(const VerifyOptions& opt) {
                    fmt("%.1f", p.layers_deg) + "°, 2 seed spreads), and the default lies in " +
                    fmt("%.0f", p.default_low) + "–" + fmt("%.0f", p.default_high) +
                    "° (real sand: about 25° rounded to 40° angular)"};
-  std::vector<Layers> models = {Layers::AllDynamic};
-  for (Layers l : compared_models(opt)) models.push_back(l);
+  const std::vector<Layers> models = pile_models(opt);
   std::vector<double> rolling = p.rolling;
   if (std::find(rolling.begin(), rolling.end(), default_mr) == rolling.end()) rolling.push_back(default_mr);
   std::sort(rolling.begin(), rolling.end());
@@ -243,8 +242,7 @@ VerifyCase step(const VerifyOptions& opt) {
                    "silhouette error between the two steps (same seed) is at most 1.25× the larger seed-to-seed floor "
                    "(a better-converged solve lets a small heap grow by fewer, larger avalanches: its seeds differ more)"};
   const double step = Scene{}.dem.step_diameters;
-  std::vector<Layers> models = {Layers::AllDynamic};
-  for (Layers l : compared_models(opt)) models.push_back(l);
+  const std::vector<Layers> models = pile_models(opt);
   std::vector<Scene> scenes;
   for (Layers l : models)
     for (double f : {1.0, 0.5})

@@ -139,8 +139,8 @@ std::vector<const Run*> of(const std::vector<Run>& runs, Layers l) {
   return v;
 }
 
-std::vector<Layers> compared_models(const VerifyOptions& opt) {
-  std::vector<Layers> m;
+std::vector<Layers> pile_models(const VerifyOptions& opt) {
+  std::vector<Layers> m = {Layers::AllDynamic};
   if (std::find(opt.layer_models.begin(), opt.layer_models.end(), Layers::Three) != opt.layer_models.end())
     m.push_back(Layers::Three);
   return m;

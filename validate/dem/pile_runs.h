@@ -55,10 +55,10 @@ Scene with(Scene s, Layers l, double mu, double mr, uint64_t seed);
 // The DEM runs of one layer model, in order.
 std::vector<const Run*> of(const std::vector<Run>& runs, Layers l);
 
-// The layer models --layers holds against all-dynamic that the heap, step
-// and engine-piles cases run beside it (three-layer only; the layers case
-// takes every model listed).
-std::vector<Layers> compared_models(const VerifyOptions& opt);
+// The layer models the heap, step and engine-piles cases run: all-dynamic
+// first, then three-layer if --layers lists it (the layers case takes every
+// model listed).
+std::vector<Layers> pile_models(const VerifyOptions& opt);
 
 // A layer model is an acceleration (paper §8): its runs must solve fewer
 // bodies than all-dynamic's on the same scenes, or the comparison compares

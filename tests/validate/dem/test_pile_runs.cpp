@@ -40,11 +40,12 @@ TEST(PileRuns, TheWorkCheckFailsAModelThatTookNoGrainOutOfTheSolve) {
 
 TEST(PileRuns, ThreeLayerIsComparedOnlyWhenListed) {
   VerifyOptions opt;
-  EXPECT_EQ(compared_models(opt), std::vector<Layers>{Layers::Three});  // default: three,bcre
+  const std::vector<Layers> both = {Layers::AllDynamic, Layers::Three}, alone = {Layers::AllDynamic};
+  EXPECT_EQ(pile_models(opt), both);  // default: three,bcre
   opt.layer_models = {Layers::AllDynamic};
-  EXPECT_TRUE(compared_models(opt).empty());
+  EXPECT_EQ(pile_models(opt), alone);
   opt.layer_models = {Layers::Bcre};
-  EXPECT_TRUE(compared_models(opt).empty());
+  EXPECT_EQ(pile_models(opt), alone);
 }
 
 }  // namespace
