@@ -1,5 +1,7 @@
 #include "src/image_io.h"
 
+#include <array>
+
 #include <png.h>
 #include <zlib.h>
 
@@ -30,6 +32,24 @@ bool write_png(png_structp png, png_infop info, const cv::Mat* img, png_bytepp r
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
   png_set_bgr(png);
+  png_write_image(png, rows);
+  png_write_end(png, info);
+  return true;
+}
+
+// A palette PNG: up to 256 colours, packed 1, 2, 4 or 8 bits a pixel,
+// unfiltered (the PNG spec's advice for palette pictures). Same longjmp rule.
+bool write_indexed(png_structp png, png_infop info, int w, int h, int depth, const png_color* palette, int colours,
+                   png_bytepp rows, std::vector<uchar>* out) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_set_write_fn(png, out, append, flush);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+  png_set_compression_level(png, Z_BEST_SPEED);
+  png_set_compression_strategy(png, Z_RLE);
+  png_set_IHDR(png, info, png_uint_32(w), png_uint_32(h), depth, PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_PLTE(png, info, palette, colours);
+  png_write_info(png, info);
   png_write_image(png, rows);
   png_write_end(png, info);
   return true;
@@ -67,6 +87,64 @@ std::vector<uchar> encode_png(const cv::Mat& img) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   const bool ok = info && write_png(png, info, &img, rows.data(), &out);
+  png_destroy_write_struct(&png, &info);
+  if (!ok) throw SimulationError("PNG encoding failed (libpng)");
+  return out;
+}
+
+std::vector<uchar> encode_png_indexed(const cv::Mat& img) {
+  if (img.empty() || img.type() != CV_8UC3) return encode_png(img);
+  // The palette in order of first appearance (row by row): the same picture,
+  // the same bytes. A run of one colour costs one compare.
+  std::vector<png_color> palette;
+  cv::Mat index(img.rows, img.cols, CV_8U);
+  uint32_t last = 0xffffffff;
+  uchar last_i = 0;
+  std::array<int16_t, 4096> hashed;  // a colour's 12-bit hash -> its index (-1: none)
+  hashed.fill(-1);
+  for (int y = 0; y < img.rows; ++y) {
+    const uchar* p = img.ptr<uchar>(y);
+    uchar* q = index.ptr<uchar>(y);
+    for (int x = 0; x < img.cols; ++x, p += 3) {
+      const uint32_t c = uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16;
+      if (c != last) {
+        uint32_t h = (c * 2654435761u) >> 20;
+        for (;; h = (h + 1) & 4095) {
+          const int16_t i = hashed[h];
+          if (i < 0) {
+            if (palette.size() == 256) return encode_png(img);  // too many colours for a palette
+            hashed[h] = int16_t(palette.size());
+            palette.push_back({p[2], p[1], p[0]});
+            last_i = uchar(palette.size() - 1);
+            break;
+          }
+          const png_color& e = palette[size_t(i)];
+          if (e.red == p[2] && e.green == p[1] && e.blue == p[0]) {
+            last_i = uchar(i);
+            break;
+          }
+        }
+        last = c;
+      }
+      q[x] = last_i;
+    }
+  }
+  const int n = int(palette.size()), depth = n <= 2 ? 1 : n <= 4 ? 2 : n <= 16 ? 4 : 8;
+  // Rows packed at `depth` bits, the leftmost pixel in the high bits.
+  const int per_byte = 8 / depth, row_bytes = (img.cols + per_byte - 1) / per_byte;
+  cv::Mat packed = depth == 8 ? index : cv::Mat(img.rows, row_bytes, CV_8U, cv::Scalar(0));
+  if (depth < 8)
+    for (int y = 0; y < img.rows; ++y) {
+      const uchar* q = index.ptr<uchar>(y);
+      uchar* r = packed.ptr<uchar>(y);
+      for (int x = 0; x < img.cols; ++x) r[x / per_byte] |= uchar(q[x] << (8 - depth * (x % per_byte + 1)));
+    }
+  std::vector<png_bytep> rows(size_t(img.rows));
+  for (int y = 0; y < img.rows; ++y) rows[size_t(y)] = packed.ptr<uchar>(y);
+  std::vector<uchar> out;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  const bool ok = info && write_indexed(png, info, img.cols, img.rows, depth, palette.data(), n, rows.data(), &out);
   png_destroy_write_struct(&png, &info);
   if (!ok) throw SimulationError("PNG encoding failed (libpng)");
   return out;

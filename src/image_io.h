@@ -18,6 +18,11 @@ namespace sandpic {
 // cv::imencode(".png", img) makes them. Throws SimulationError otherwise.
 std::vector<uchar> encode_png(const cv::Mat& img);
 
+// The same picture as a palette PNG when it has at most 256 colours (a sand
+// picture without a background image or figures has 4-6), else as
+// encode_png. Smaller and faster to decode: the studio's previews.
+std::vector<uchar> encode_png_indexed(const cv::Mat& img);
+
 // How a decoded picture comes out: 8-bit BGR (16-bit, grey and alpha
 // converted, as cv::IMREAD_COLOR), 8-bit grey (cv::IMREAD_GRAYSCALE) or as
 // stored (cv::IMREAD_UNCHANGED).

@@ -17,6 +17,7 @@ namespace sandpic {
 struct RunOptions {
   bool stages = false;    // keep the intermediate pictures of Fig. 2
   bool progress = false;  // draw a progress bar on stderr
+  bool png = true;        // encode the picture into RunResult::png (the studio's preview encodes its own)
   // The simulation's done / total, kept up to date for another thread (the
   // studio's render status); nullptr: none.
   std::atomic<double>* fraction = nullptr;
@@ -40,7 +41,7 @@ struct RunOptions {
 struct RunResult {
   cv::Mat picture;          // 8-bit BGR, window size
   cv::Mat class_map;        // the backend's: CV_8U, class 0..3 or kNoSand
-  std::vector<uchar> png;   // the picture, encoded
+  std::vector<uchar> png;   // the picture, encoded (RunOptions::png)
   ordered_json stats;
   Stages stages;
   std::string grains;  // with RunOptions::grains: the grain table (src/grain_table.h), CSV

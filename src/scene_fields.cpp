@@ -587,7 +587,9 @@ std::vector<Field> make_fields() {
       per_class("grains.proportions", [](auto& s) -> auto& { return s.grains.proportions; }, 0, 1,
                 "share of cells whose dominant class it is (§4.4, Algorithm 1)")
           .in_area(),
-      colours_field(),
+      // Only the picture's colours: no stage before it reads them (a colour
+      // change in the studio keeps the layout).
+      colours_field().read_by(kRender),
   });
   // paper §4-5: what an area of the region (Fig. 17) may make its own.
   section(kPipeline, true, {

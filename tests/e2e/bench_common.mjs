@@ -45,7 +45,7 @@ export function instrument() {
 
 // One change in the page, timed there: `value` set on the control `selector`
 // and its input event (a plain Event, as a colour picker or a slider sends;
-// not a keystroke), to the frame after the new preview's decode().
+// not a keystroke), to the frame after the new preview is drawn.
 export async function once(page, selector, value) {
   await page.waitForFunction(() => window.__bench.inflight === 0, null, { polling: 20 });
   return page.evaluate(async ({ selector, value }) => {
@@ -72,7 +72,7 @@ export async function once(page, selector, value) {
       lattice: p.lattice_ms,        // the server's lattice run, of it:
       prepare: p.prepare_ms,        // the layout (init, segment, falling order)
       simulate: p.simulate_ms,      // the fall
-      decode: decoded - p.answered, // body read, blob URL, decode
+      decode: decoded - p.answered, // body read, decoded, drawn
       paint: painted - decoded,
       previews: window.__bench.previews.length - nPreviews,
     };

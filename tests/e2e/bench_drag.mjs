@@ -7,7 +7,7 @@
 // (176 events, 2.9 s at 60 Hz). For each drag: the previews shown per
 // second while it lasts, the requests sent and those the studio answered 409
 // (superseded), and the round trip of each preview shown (from the change
-// whose scene it shows to its decode() and the next frame), with the
+// whose scene it shows to its drawing and the next frame), with the
 // server's lattice time per preview apart from it. Timings are printed,
 // never asserted.
 //

@@ -1,7 +1,7 @@
 // The preview round trip of sandpic studio, measured in the page
 // (performance.now() in headless Chromium): from a control change (an input
 // event on colour C1, a new colour each time) to the new preview decoded and
-// on screen (#preview's data-seq set once img.decode() resolved, then the
+// on screen (#preview's data-seq set once it is drawn on its canvas, then the
 // next animation frame), on the default scene at full size. Twice: (a) idle,
 // (b) while a final DEM render runs in the background (started from the page
 // at --render-scale, large enough to run through the whole measurement; the

@@ -58,9 +58,9 @@ async function main() {
       await page.screenshot({ path: file });
       log(`screenshot ${path.basename(file)}`);
     };
-    // The bytes of the picture the preview shows (its blob: URL).
+    // The bytes of the picture the preview shows (the PNG it was drawn from).
     const shown = () => page.evaluate(async () => {
-      const buf = await (await fetch(document.getElementById('preview').src)).arrayBuffer();
+      const buf = await App.picture.arrayBuffer();
       return Array.from(new Uint8Array(buf));
     }).then((a) => Buffer.from(a));
     const hash = (b) => createHash('sha256').update(b).digest('hex').slice(0, 16);
@@ -302,7 +302,7 @@ async function main() {
     const frictionBefore = await page.evaluate(() => App.scene.physics.friction);
     await page.evaluate(async () => {
       const img = document.getElementById('preview'), t = (window.__drag = { shown: [], inflight: 0, maxInflight: 0, sent: [] });
-      t.before = new Uint8Array(await (await fetch(img.src)).arrayBuffer());
+      t.before = new Uint8Array(await App.picture.arrayBuffer());
       t.mo = new MutationObserver(() => t.shown.push(Number(img.dataset.seq)));
       t.mo.observe(img, { attributes: true, attributeFilter: ['data-seq'] });
       // Requests out: counted in when sent, out when the answer's headers are
@@ -352,7 +352,7 @@ async function main() {
     const pictures = await page.evaluate(async () => {
       const bytes = async (res) => new Uint8Array(await res.arrayBuffer());
       const same = (a, b) => a.length === b.length && a.every((v, i) => v === b[i]);
-      const now = await bytes(await fetch(document.getElementById('preview').src));
+      const now = await bytes(App.picture);
       const fresh = await bytes(await fetch('/api/preview', { method: 'POST', body: JSON.stringify({ ...App.scene, mode: 'lattice' }) }));
       return { fresh: same(now, fresh), before: same(now, window.__drag.before), size: now.length };
     });

@@ -48,6 +48,32 @@ TEST(ImageIo, PngRoundTripsThroughThePlugin) {
   EXPECT_TRUE(read_picture("/nonexistent/picture.png").empty());
 }
 
+// A palette PNG holds the same pixels at every bit depth (2, 3, 5, 17 and
+// 256 colours: 1, 2, 4, 8 and 8 bits), widths that do not fill the last
+// byte included; a picture of 257 colours, grey or BGRA is encode_png's.
+TEST(ImageIo, IndexedPngHoldsTheSamePixels) {
+  for (int colours : {1, 2, 3, 5, 17, 256})
+    for (int w : {1, 7, 37, 1000}) {
+      cv::Mat img(23, w, CV_8UC3);
+      for (int y = 0; y < img.rows; ++y)
+        for (int x = 0; x < w; ++x) {
+          const int c = int(uniform(uint64_t(colours), Stream::LatticeSlide, uint64_t(y * w + x)) * colours);
+          img.at<cv::Vec3b>(y, x) = cv::Vec3b(uchar(c), uchar(255 - c), uchar(c * 7));
+        }
+      const std::vector<uchar> png = encode_png_indexed(img);
+      ASSERT_GT(png.size(), 26u);
+      EXPECT_EQ(png[25], 3) << "palette colour type, " << colours << " colours, width " << w;
+      const cv::Mat back = decode_picture(png.data(), png.size());
+      ASSERT_EQ(back.type(), CV_8UC3);
+      EXPECT_EQ(cv::norm(img, back, cv::NORM_INF), 0) << colours << " colours, width " << w;
+      EXPECT_EQ(encode_png_indexed(img.clone()), png);  // the same picture, the same bytes
+    }
+  const cv::Mat many = picture(40, 20, CV_8UC3, 5);  // noise: more than 256 colours
+  EXPECT_EQ(encode_png_indexed(many), encode_png(many));
+  const cv::Mat grey = picture(40, 20, CV_8UC1, 5);
+  EXPECT_EQ(encode_png_indexed(grey), encode_png(grey));
+}
+
 TEST(ImageIo, RefusesWhatPngCannotHold) {
   EXPECT_THROW(encode_png(cv::Mat()), SimulationError);
   EXPECT_THROW(encode_png(cv::Mat(4, 4, CV_16UC3, cv::Scalar(1, 2, 3))), SimulationError);

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include "src/pipeline.h"
+#include "src/scene_file.h"
 #include "tests/test_folder.h"
 
 namespace sandpic::studio {
@@ -63,6 +65,15 @@ TEST(StudioApi, APreviewIsAPngOfTheWindowsSize) {
   const json stats = json::parse(r.headers.at("X-Sandpic-Stats"));
   EXPECT_EQ(stats["mode"], "lattice");
   EXPECT_EQ(stats["window"], json({200, 140}));
+  // A palette PNG (IHDR colour type 3) of the render's pixels.
+  ASSERT_GT(r.body.size(), 26u);
+  EXPECT_EQ(r.body[25], 3);
+  Scene s;
+  apply_scale(s, 0.2);
+  auto sim = make_simulator(s);
+  const RunResult run = run_pipeline(s, *sim, {});
+  EXPECT_EQ(cv::norm(img, run.picture, cv::NORM_INF), 0);
+  EXPECT_GT(stats["timing"]["encode_s"].get<double>(), 0);
 }
 
 TEST(StudioApi, APreviewIsTheLatticesEvenForADemScene) {
@@ -72,7 +83,7 @@ TEST(StudioApi, APreviewIsTheLatticesEvenForADemScene) {
 
 // While only physics changes, a preview reuses the last preview's layout and
 // makes the bytes a fresh preview makes; a layout change prepares anew.
-TEST(StudioApi, APhysicsChangeReusesTheLayout) {
+TEST(StudioApi, APhysicsOrColourChangeReusesTheLayout) {
   preview(R"({"seed": 4, "physics": {"friction": 0.3}})", ".", 0.2);
   const Reply dragged = preview(R"({"seed": 4, "physics": {"friction": 0.8}})", ".", 0.2);
   EXPECT_EQ(json::parse(dragged.headers.at("X-Sandpic-Stats"))["timing"]["layout_reused"], true);
@@ -82,6 +93,14 @@ TEST(StudioApi, APhysicsChangeReusesTheLayout) {
   const Reply fresh = preview(R"({"seed": 4, "physics": {"friction": 0.8}})", ".", 0.2);
   EXPECT_FALSE(json::parse(fresh.headers.at("X-Sandpic-Stats"))["timing"].contains("layout_reused"));
   EXPECT_EQ(dragged.body, fresh.body);
+  // The colours are the picture's alone: a new C1 keeps the layout too, and
+  // its picture is the one a fresh preview of that scene makes.
+  const std::string recoloured = R"({"seed": 4, "physics": {"friction": 0.8}, "grains": {"colors": ["#8a2f5d", "#b05030", "#e0b050", "#f5f0e6"]}})";
+  const Reply c1 = preview(recoloured, ".", 0.2);
+  EXPECT_EQ(json::parse(c1.headers.at("X-Sandpic-Stats"))["timing"]["layout_reused"], true);
+  EXPECT_NE(c1.body, fresh.body);
+  preview(R"({"seed": 9})", ".", 0.2);
+  EXPECT_EQ(preview(recoloured, ".", 0.2).body, c1.body);
 }
 
 TEST(StudioApi, SameSceneAndSeedSameBytes) {
