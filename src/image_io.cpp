@@ -55,6 +55,19 @@ bool write_indexed(png_structp png, png_infop info, int w, int h, int depth, con
   return true;
 }
 
+// libpng's write structs around `write` (one of the above), freed however it
+// ends; its bytes, or SimulationError.
+template <class Write>
+std::vector<uchar> with_png_writer(Write write) {
+  std::vector<uchar> out;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  const bool ok = info && write(png, info, &out);
+  png_destroy_write_struct(&png, &info);
+  if (!ok) throw SimulationError("PNG encoding failed (libpng)");
+  return out;
+}
+
 struct Plugin {
   bool (*read)(const char*, int, cv::Mat*) = nullptr;
   bool (*decode)(const void*, size_t, int, cv::Mat*) = nullptr;
@@ -83,13 +96,9 @@ std::vector<uchar> encode_png(const cv::Mat& img) {
                           " picture of type " + std::to_string(img.type()) + " is not 8-bit grey, BGR or BGRA");
   std::vector<png_bytep> rows(size_t(img.rows));
   for (int y = 0; y < img.rows; ++y) rows[size_t(y)] = const_cast<png_bytep>(img.ptr<uchar>(y));
-  std::vector<uchar> out;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  const bool ok = info && write_png(png, info, &img, rows.data(), &out);
-  png_destroy_write_struct(&png, &info);
-  if (!ok) throw SimulationError("PNG encoding failed (libpng)");
-  return out;
+  return with_png_writer([&](png_structp png, png_infop info, std::vector<uchar>* out) {
+    return write_png(png, info, &img, rows.data(), out);
+  });
 }
 
 std::vector<uchar> encode_png_indexed(const cv::Mat& img) {
@@ -141,13 +150,9 @@ std::vector<uchar> encode_png_indexed(const cv::Mat& img) {
     }
   std::vector<png_bytep> rows(size_t(img.rows));
   for (int y = 0; y < img.rows; ++y) rows[size_t(y)] = packed.ptr<uchar>(y);
-  std::vector<uchar> out;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  const bool ok = info && write_indexed(png, info, img.cols, img.rows, depth, palette.data(), n, rows.data(), &out);
-  png_destroy_write_struct(&png, &info);
-  if (!ok) throw SimulationError("PNG encoding failed (libpng)");
-  return out;
+  return with_png_writer([&](png_structp png, png_infop info, std::vector<uchar>* out) {
+    return write_indexed(png, info, img.cols, img.rows, depth, palette.data(), n, rows.data(), out);
+  });
 }
 
 cv::Mat read_picture(const std::string& path, ImageRead how) {

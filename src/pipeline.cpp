@@ -114,7 +114,7 @@ RunResult run_pipeline(const Scene& given, Simulator& sim, const RunOptions& opt
   out.class_map = shown_classes(s, sim_result.class_map, &mirror_row);
   out.picture = render(s, out.class_map, background, figures);
   timing["render_s"] = clock.lap();
-  if (opt.png) out.png = encode_png(out.picture);
+  out.png = opt.palette_png ? encode_png_indexed(out.picture) : encode_png(out.picture);
   timing["encode_s"] = clock.lap();
   if (opt.grains) out.grains = grain_table_csv(s, init.grains, seg, order, sim_result.x, sim_result.y);
   if (opt.stages) {

@@ -17,7 +17,7 @@ namespace sandpic {
 struct RunOptions {
   bool stages = false;    // keep the intermediate pictures of Fig. 2
   bool progress = false;  // draw a progress bar on stderr
-  bool png = true;        // encode the picture into RunResult::png (the studio's preview encodes its own)
+  bool palette_png = false;  // RunResult::png as a palette PNG where it can be (encode_png_indexed: the studio's previews)
   // The simulation's done / total, kept up to date for another thread (the
   // studio's render status); nullptr: none.
   std::atomic<double>* fraction = nullptr;
@@ -41,7 +41,7 @@ struct RunOptions {
 struct RunResult {
   cv::Mat picture;          // 8-bit BGR, window size
   cv::Mat class_map;        // the backend's: CV_8U, class 0..3 or kNoSand
-  std::vector<uchar> png;   // the picture, encoded (RunOptions::png)
+  std::vector<uchar> png;   // the picture, encoded
   ordered_json stats;
   Stages stages;
   std::string grains;  // with RunOptions::grains: the grain table (src/grain_table.h), CSV
