@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace sandpic {
 
@@ -61,14 +62,56 @@ std::array<double, kClasses> dem_masses(const Scene& s, const ClassSet& in_run) 
   return m;
 }
 
-// A fixed α let friction no longer shape the piles: the static layer grew
-// as steep as α allowed at 0.4 and 0.9 alike (three layers, one pile of
-// 1,260 grains: 42° and 44° at α = 35°; 34° and 43° with this). Friction
-// sets how steep grains can stand, so it sets how steep they may freeze.
+namespace {
+
+// The heap angle of verify-dem's full heap (3,600 grains of two sizes poured
+// from a point, every grain a body, the default step), mean of physics seeds
+// 1 and 2 (rolling resistance 0: seed 1), by sliding friction (rows,
+// kHeapFriction) and rolling resistance (columns, kHeapRolling);
+// docs/notebook/2026-12-07-alpha-from-the-piles.md.
+constexpr double kHeapAngleDeg[3][3] = {
+    {7.5, 9.2, 10.05},
+    {16.0, 25.7, 32.95},
+    {24.1, 29.25, 38.75},
+};
+
+// Where v falls on a grid: the cell's first index and the weight of the next
+// point, clamped to the grid's ends.
+template <size_t N>
+std::pair<size_t, double> grid_cell(const std::array<double, N>& grid, double v) {
+  if (v <= grid.front()) return {0, 0.0};
+  if (v >= grid.back()) return {grid.size() - 2, 1.0};
+  size_t i = 0;
+  while (v > grid[i + 1]) ++i;
+  return {i, (v - grid[i]) / (grid[i + 1] - grid[i])};
+}
+
+}  // namespace
+
+double all_dynamic_heap_angle_deg(double friction, double rolling_resistance) {
+  const auto [i, u] = grid_cell(kHeapFriction, friction);
+  const auto [j, v] = grid_cell(kHeapRolling, rolling_resistance);
+  auto row = [&, j = j, v = v](size_t r) { return (1 - v) * kHeapAngleDeg[r][j] + v * kHeapAngleDeg[r][j + 1]; };
+  const double angle = (1 - u) * row(i) + u * row(i + 1);
+  // Below the table's lowest friction: frictionless grains hold no slope.
+  return friction < kHeapFriction.front() ? angle * friction / kHeapFriction.front() : angle;
+}
+
+// paper §8.1: θ < α keeps a grain on a slope steeper than α moving. α is
+// the angle the grains' own piles stand at: a grain at rest on a gentler
+// slope stays where it is when every grain is a body, so it may join the
+// static layer; on a steeper one it rests only for the moment. Lower, as
+// α was until 2026-12-07 (the angle a lone grain slides or rolls at plus
+// 5°: 10.7° at the defaults, where the piles stand at 25°), the grains on
+// the default scene's flanks (13-14°) never became static: with a band of
+// static bodies a third of the picture's grains were still bodies at the
+// end, at 2.2x the body-steps. Higher, grains resting for the moment on
+// a steep flank freeze there (a fixed 35°: piles of 42-47° at friction 0.4
+// and 0.9 alike).
 double dem_slope_limit_deg(const Scene& s) {
   if (s.dem.slope_limit_deg > 0) return s.dem.slope_limit_deg;
-  const double repose = std::atan(std::min(s.physics.friction, s.dem.rolling_resistance)) * 180 / std::numbers::pi;
-  return std::min(89.0, repose + s.dem.slope_margin_deg);
+  const double repose = all_dynamic_heap_angle_deg(s.physics.friction, s.dem.rolling_resistance);
+  return std::clamp(repose + s.dem.slope_margin_deg, 0.0, 89.0);
 }
 
 // A resting contact closes by g·dt each step (~11 px/s at the default

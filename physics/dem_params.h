@@ -37,9 +37,17 @@ double dem_bounce_speed(const Water& w, double dt);
 // rolling resistance, the solver's iterations, the bounce speed at `dt`.
 GrainMaterial dem_material(const Scene& s, const Water& w, double dt);
 
-// paper §8.1's α in degrees: dem.slope_limit_deg, or with 0 the angle at
-// which a lone grain starts to slide (friction) or roll (rolling
-// resistance), whichever is lower, plus dem.slope_margin_deg.
+// The angle a heap of the scene's grains stands at when every grain is a
+// body (verify-dem's heap), interpolated in a table measured by sliding
+// friction and rolling resistance, clamped at the table's ends,
+// and falling to 0 with friction below its lowest.
+double all_dynamic_heap_angle_deg(double friction, double rolling_resistance);
+inline constexpr std::array<double, 3> kHeapFriction{0.1, 0.4, 0.9};  // the table's rows
+inline constexpr std::array<double, 3> kHeapRolling{0.0, 0.1, 0.3};   // and columns
+
+// paper §8.1's α in degrees: dem.slope_limit_deg, or with 0 the angle the
+// grains' piles stand at (all_dynamic_heap_angle_deg) plus
+// dem.slope_margin_deg.
 double dem_slope_limit_deg(const Scene& s);
 
 }  // namespace sandpic

@@ -446,6 +446,16 @@ void DemRun::classify_stage() {
 // out of every body's reach and joins the height field.
 void DemRun::freeze_stage() {
   if (layers_ == Layers::AllDynamic) return;
+  // Lowest first: a grain is fixed only on fixed grains, so a stack buried
+  // in one cycle is fixed in one cycle, each on the one fixed under it.
+  auto lowest_first = [&](std::vector<int32_t>& ids, auto height) {
+    std::sort(ids.begin(), ids.end(), [&](int32_t a, int32_t b) {
+      const double ha = height(a), hb = height(b);
+      return ha != hb ? ha < hb : a < b;
+    });
+  };
+  lowest_first(statics_, [&](int32_t id) { return world_.position(slot_[size_t(id)]).y(); });
+  lowest_first(still_statics_, [&](int32_t id) { return -double(y_[size_t(id)]); });
   std::vector<int32_t> still;
   still.reserve(statics_.size());
   for (int32_t id : statics_) {

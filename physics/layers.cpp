@@ -18,6 +18,12 @@ double LayerHeights::support(double x, double r) const {
   return top;
 }
 
+double LayerHeights::fixed_support(double x, double r) const {
+  double top = 0;
+  for (int j = first_column(x, r); j <= last_column(x, r); ++j) top = std::max(top, hf[size_t(j)]);
+  return top;
+}
+
 void LayerHeights::add_static(double x, double y, double r) {
   for (int j = first_column(x, r); j <= last_column(x, r); ++j)
     hs[size_t(j)] = std::max(hs[size_t(j)], outline(x, y, r, j));
@@ -63,6 +69,7 @@ bool becomes_static(const LayerHeights& h, const LayerRule& rule, double x, doub
 }
 
 bool becomes_fixed(const LayerHeights& h, const LayerRule& rule, double x, double y, double r) {
+  if (y - r > h.fixed_support(x, r) + rule.support_px) return false;  // on a grain not yet fixed
   return y + r < h.lowest_hs(h.column(x), rule.baseline) - rule.band_px;
 }
 

@@ -28,7 +28,8 @@
 //   or beside any flank steeper than 30°) is beside it, not under it. (Read
 //   as a roof, as we did first, it made every grain that stopped beside a
 //   static flank static, however steep the flank.)
-// - α follows the friction unless the scene sets it (dem_slope_limit_deg).
+// - α is the angle all-dynamic piles stand at unless the scene sets it
+//   (dem_slope_limit_deg), not the paper's fixed 30°.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -51,8 +52,9 @@ struct LayerHeights {
   int first_column(double x, double r) const { return column(x - r); }
   int last_column(double x, double r) const { return column(x + r); }
   static double outline(double x, double y, double r, int j);
-  // The highest H_s under a grain: what it would rest on.
+  // The highest H_s (H_f) under a grain: what it would rest on.
   double support(double x, double r) const;
+  double fixed_support(double x, double r) const;
   // Raise H_s (static) or H_f (fixed) to a grain's outline.
   void add_static(double x, double y, double r);
   void add_fixed(double x, double y, double r);
@@ -81,7 +83,12 @@ bool becomes_static(const LayerHeights& h, const LayerRule& rule, double x, doub
                     int rested);
 // Algorithm 2 lines 13-21: a static grain becomes fixed once its top lies
 // deeper than the band under the lowest H_s nearby (the paper looks at column
-// j alone: one tall static grain would then fix grains beside the flow).
+// j alone: one tall static grain would then fix grains beside the flow), and
+// only resting on the fixed layer (its bottom within `support_px` of H_f),
+// so that layer grows from the floor up, whole, as the static layer does.
+// A grain fixed on one not yet at rest cages it: a static body under fixed
+// grains, squeezed by the pile, overlapped its neighbour by 0.31 diameters
+// that no step could undo, and the sub-steps went to 8.
 bool becomes_fixed(const LayerHeights& h, const LayerRule& rule, double x, double y, double r);
 
 }  // namespace sandpic

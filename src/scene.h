@@ -191,8 +191,8 @@ struct Scene {
     int cycle_steps = 40;              // paper §8.1: layers updated every 40 steps
     double rest_displacement = 0.01;   // at rest: moved less than this (small-grain diameters) in a cycle
     int patience_cycles = 0;           // at rest this many cycles: static anywhere (0: never)
-    double slope_limit_deg = 0;        // paper §8.1's α for the steepest drop θ; 0: from the friction
-    double slope_margin_deg = 5;       // α from the friction: the grains' own repose angle plus this
+    double slope_limit_deg = 0;        // paper §8.1's α for the steepest drop θ; 0: from the piles
+    double slope_margin_deg = 0;       // α from the piles: the all-dynamic heap angle plus this
     double slope_baseline_diameters = 4;  // θ measured this far to either side (largest grain diameters)
     double static_thickness_mm = 2;    // paper §8.1
     bool static_bodies = false;        // paper §8.1: static grains stay in the simulation (docs/dem.md)

@@ -775,9 +775,10 @@ std::vector<Field> make_fields() {
               "a grain at rest this many cycles in a row becomes static on any slope (0: never; faster, less exact)"),
       real("dem.slope_limit_deg", [](auto& s) -> auto& { return s.dem.slope_limit_deg; }, 0, 90,
            "§8.1's α: a grain becomes static only where its steepest drop to the static layer is below it "
-           "(0: atan(min(friction, rolling resistance)) + dem.slope_margin_deg)"),
+           "(0: the angle the grains' piles stand at when every grain is a body, from friction and rolling "
+           "resistance, + dem.slope_margin_deg)"),
       real("dem.slope_margin_deg", [](auto& s) -> auto& { return s.dem.slope_margin_deg; }, 0, 60,
-           "with dem.slope_limit_deg 0: α is the angle a lone grain slides or rolls at plus this"),
+           "with dem.slope_limit_deg 0: α is the all-dynamic heap angle plus this"),
       real("dem.slope_baseline_diameters", [](auto& s) -> auto& { return s.dem.slope_baseline_diameters; }, 0.5, 1000,
            "§8.1's θ is the steepest drop to the static layer this far to either side, in the largest grain's diameters"),
       real("dem.static_thickness_mm", [](auto& s) -> auto& { return s.dem.static_thickness_mm; }, 0, 1000,

@@ -1,3 +1,5 @@
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "physics/dem_params.h"
@@ -5,19 +7,42 @@
 namespace sandpic {
 namespace {
 
-// α follows the friction: the angle a lone grain slides (atan μ) or rolls
-// (atan μ_r) at, whichever is lower, plus the margin; a scene's own α wins.
-TEST(DemParams, SlopeLimitFollowsFrictionUnlessSet) {
+// α is the angle the grains' piles stand at when every grain is a body (a
+// table measured by friction and rolling resistance) plus the margin; a
+// scene's own α wins.
+TEST(DemParams, SlopeLimitIsThePilesAngleUnlessSet) {
   Scene s;
-  s.physics.friction = 0.05;
+  s.physics.friction = 0.4;
   s.dem.rolling_resistance = 0.1;
-  EXPECT_NEAR(dem_slope_limit_deg(s), 2.862 + 5, 1e-3);
-  s.physics.friction = 0.9;  // rolling resistance 0.1 is the lower
-  EXPECT_NEAR(dem_slope_limit_deg(s), 5.711 + 5, 1e-3);
-  s.dem.slope_margin_deg = 0;
-  EXPECT_NEAR(dem_slope_limit_deg(s), 5.711, 1e-3);
+  const double heap = all_dynamic_heap_angle_deg(0.4, 0.1);
+  EXPECT_DOUBLE_EQ(dem_slope_limit_deg(s), heap + s.dem.slope_margin_deg);
+  s.dem.slope_margin_deg = 3;
+  EXPECT_DOUBLE_EQ(dem_slope_limit_deg(s), heap + 3);
   s.dem.slope_limit_deg = 35;
   EXPECT_DOUBLE_EQ(dem_slope_limit_deg(s), 35);
+}
+
+// The table's angle grows with sliding friction and with rolling
+// resistance, continuously, is 0 without friction, and holds its last
+// value beyond the table.
+TEST(DemParams, ThePilesAngleGrowsWithFrictionAndRollingResistance) {
+  EXPECT_DOUBLE_EQ(all_dynamic_heap_angle_deg(0, 0.3), 0);
+  double last_mu = -1;
+  for (double mu = 0; mu <= 1.2; mu += 0.01) {
+    double last_mr = -1;
+    for (double mr = 0; mr <= 0.5; mr += 0.01) {
+      const double a = all_dynamic_heap_angle_deg(mu, mr);
+      EXPECT_GE(a, last_mr - 1e-9) << "friction " << mu << ", rolling resistance " << mr;
+      EXPECT_LT(std::abs(a - all_dynamic_heap_angle_deg(mu, mr + 0.001)), 0.2) << mu << ", " << mr;
+      EXPECT_LT(std::abs(a - all_dynamic_heap_angle_deg(mu + 0.001, mr)), 0.2) << mu << ", " << mr;
+      last_mr = a;
+    }
+    const double at_default = all_dynamic_heap_angle_deg(mu, 0.1);
+    EXPECT_GE(at_default, last_mu - 1e-9) << "friction " << mu;
+    last_mu = at_default;
+  }
+  EXPECT_DOUBLE_EQ(all_dynamic_heap_angle_deg(5, 5), all_dynamic_heap_angle_deg(kHeapFriction.back(), kHeapRolling.back()));
+  EXPECT_GT(all_dynamic_heap_angle_deg(kHeapFriction.back(), kHeapRolling.back()), all_dynamic_heap_angle_deg(0.1, 0));
 }
 
 // One step moves the fastest grain dem.step_diameters small diameters.

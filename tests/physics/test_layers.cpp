@@ -94,11 +94,27 @@ TEST(Layers, FixedOnlyUnderTheStaticBand) {
   LayerHeights h(20);
   LayerRule r = rule();
   for (auto& v : h.hs) v = 30;
+  for (auto& v : h.hf) v = 18.9;  // each grain rests on the fixed layer
   EXPECT_FALSE(becomes_fixed(h, r, 10, 19.6, 0.5));  // its top is inside the band
   EXPECT_TRUE(becomes_fixed(h, r, 10, 19.4, 0.5));
+  for (auto& v : h.hf) v = 11.5;
   h.hs[13] = 18;  // a low static column within the baseline keeps the band whole
   EXPECT_FALSE(becomes_fixed(h, r, 11, 12, 0.5));
   EXPECT_TRUE(becomes_fixed(h, r, 5, 12, 0.5));  // but not further away
+}
+
+// The fixed layer grows from the floor up: a grain deep under the band but
+// resting on a grain that is not fixed stays static until that one is.
+TEST(Layers, FixedOnlyOnTheFixedLayer) {
+  LayerHeights h(20);
+  LayerRule r = rule();
+  for (auto& v : h.hs) v = 30;
+  EXPECT_TRUE(becomes_fixed(h, r, 10, 0.5, 0.5));    // on the floor
+  EXPECT_FALSE(becomes_fixed(h, r, 10, 1.45, 0.5));  // on the grain below, not yet fixed
+  h.add_fixed(10, 0.5, 0.5);
+  EXPECT_TRUE(becomes_fixed(h, r, 10, 1.45, 0.5));
+  EXPECT_TRUE(becomes_fixed(h, r, 10.8, 1.2, 0.5));  // on its flank
+  EXPECT_FALSE(becomes_fixed(h, r, 10.3, 2.45, 0.5));  // on a static grain over the fixed one
 }
 
 }  // namespace
