@@ -12,15 +12,9 @@ double LayerHeights::outline(double x, double y, double r, int j) {
   return dx >= r ? y : y + std::sqrt(r * r - dx * dx);
 }
 
-double LayerHeights::support(double x, double r) const {
+double LayerHeights::highest(const std::vector<double>& layer, double x, double r) const {
   double top = 0;
-  for (int j = first_column(x, r); j <= last_column(x, r); ++j) top = std::max(top, hs[size_t(j)]);
-  return top;
-}
-
-double LayerHeights::fixed_support(double x, double r) const {
-  double top = 0;
-  for (int j = first_column(x, r); j <= last_column(x, r); ++j) top = std::max(top, hf[size_t(j)]);
+  for (int j = first_column(x, r); j <= last_column(x, r); ++j) top = std::max(top, layer[size_t(j)]);
   return top;
 }
 

@@ -53,13 +53,16 @@ struct LayerHeights {
   int last_column(double x, double r) const { return column(x + r); }
   static double outline(double x, double y, double r, int j);
   // The highest H_s (H_f) under a grain: what it would rest on.
-  double support(double x, double r) const;
-  double fixed_support(double x, double r) const;
+  double support(double x, double r) const { return highest(hs, x, r); }
+  double fixed_support(double x, double r) const { return highest(hf, x, r); }
   // Raise H_s (static) or H_f (fixed) to a grain's outline.
   void add_static(double x, double y, double r);
   void add_fixed(double x, double y, double r);
   // The lowest H_s within `reach` columns of j.
   double lowest_hs(int j, int reach) const;
+
+ private:
+  double highest(const std::vector<double>& layer, double x, double r) const;
 };
 
 // paper §8.1's θ(x, y): the steepest drop from the static surface at
