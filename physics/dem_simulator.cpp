@@ -111,6 +111,7 @@ class DemRun {
   // static spheres; fixed grains (bcre: static grains) still kept as static
   // spheres.
   std::vector<int32_t> dynamic_, statics_, still_statics_, fixed_spheres_;
+  std::vector<int> wedged_;  // slots of bodies pressed into a collider this cycle (classify_stage)
   double buried_px_ = 0;  // a sphere of fixed_spheres_ this far under H_s leaves for the ground
   Arrivals arrivals_{16 / s_.dem.release_rate};  // about 16 grains leave per bucket
   std::vector<double> due_;     // per falling-order index: when the grain was due to become a body
@@ -174,6 +175,7 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
   rule_.band_px = s_.dem.static_thickness_mm * px_per_mm(s_);
   const double big_d = 2 * *std::max_element(radius_.begin(), radius_.end());
   rule_.baseline = std::max(1, int(std::lround(s_.dem.slope_baseline_diameters * big_d)));
+  rule_.floor_px = big_d;  // the bare floor reads as a first layer's tops
   buried_px_ = (layers_ == Layers::Three ? rule_.band_px : 0) + 2 * big_d;
   // Resting on the static layer: the bottom within a quarter of the smallest
   // diameter of H_s (overlap and the outline's rounding to columns).
@@ -400,7 +402,7 @@ void DemRun::classify_stage() {
   // solver cannot resolve it: it joins the static layer where it is. (At
   // the paper's scale grains pushed into such wedges sank 0.7 px into the
   // floor and stopped the run as a divergence.)
-  const std::vector<int> wedged = world_.wedged(0.25 * small_d_);
+  wedged_ = world_.wedged(0.25 * small_d_);
   std::vector<int32_t> still;
   still.reserve(dynamic_.size());
   for (const auto& [p, moved, id] : bodies) {
@@ -410,7 +412,7 @@ void DemRun::classify_stage() {
     // is out of reach of the flow, and a wedged one cannot get out: both
     // leave the simulation where they are (in bcre: join its static layer).
     const bool trapped = p.y() + r < heights_.hs[size_t(heights_.column(p.x()))] - rule_.band_px ||
-                         std::binary_search(wedged.begin(), wedged.end(), slot_[size_t(id)]);
+                         std::binary_search(wedged_.begin(), wedged_.end(), slot_[size_t(id)]);
     if (layers_ == Layers::Three && trapped) {
       ++settled_;
       make_fixed(id, p);
@@ -461,7 +463,13 @@ void DemRun::freeze_stage() {
   for (int32_t id : statics_) {
     const double r = radius_[in_.grains.cls[size_t(id)]];
     const Vec2 p = world_.position(slot_[size_t(id)]);
-    if (becomes_fixed(heights_, rule_, p.x(), p.y(), r))
+    // A static body wedged against an immovable grain cannot get out, as a
+    // dynamic one cannot (classify_stage): in the stress catalogue's
+    // density-100:1 scene with the band of static bodies, a light one was
+    // pressed up into a fixed grain over it by 0.2-0.28 px and held there,
+    // and the sub-steps went to 16 for the rest of the run.
+    if (becomes_fixed(heights_, rule_, p.x(), p.y(), r) ||
+        std::binary_search(wedged_.begin(), wedged_.end(), slot_[size_t(id)]))
       make_fixed(id, p);
     else
       still.push_back(id);

@@ -34,14 +34,22 @@ double LayerHeights::lowest_hs(int j, int reach) const {
   return low;
 }
 
-double static_slope_rad(const LayerHeights& h, double x, double level, int baseline) {
+double LayerHeights::surface(int j, double floor_px) const {
+  double sum = 0;
+  int n = 0;
+  for (int i = std::max(0, j - 1); i <= std::min(columns() - 1, j + 1); ++i, ++n) sum += std::max(hs[size_t(i)], floor_px);
+  return sum / n;
+}
+
+double static_slope_rad(const LayerHeights& h, double x, int baseline, double floor_px) {
   const int j = h.column(x);
+  const double level = h.surface(j, floor_px);
   // Beyond a wall there is no drop: the wall holds the grain.
   double steepest = -INFINITY;
   for (int side : {-1, 1}) {
     const int k = j + side * baseline;
     if (k < 0 || k >= h.columns()) continue;
-    steepest = std::max(steepest, std::atan2(level - h.hs[size_t(k)], std::abs(k - x)));
+    steepest = std::max(steepest, std::atan2(level - h.surface(k, floor_px), double(baseline)));
   }
   return std::isfinite(steepest) ? steepest : 0;
 }
@@ -49,17 +57,12 @@ double static_slope_rad(const LayerHeights& h, double x, double level, int basel
 bool becomes_static(const LayerHeights& h, const LayerRule& rule, double x, double y, double r, double moved,
                     int rested) {
   if (moved >= rule.rest_px || rested < 1) return false;
-  const double support = h.support(x, r);
-  if (y - r > support + rule.support_px) return false;  // on a moving grain
-  // The surface the grain rests on is at most its own bottom: a static
-  // grain uphill that reaches over its columns (a pile's toe, or any steep
-  // flank) is beside it, not under it, and the slope starts from here.
-  const double level = std::min(support, y - r);
+  if (y - r > h.support(x, r) + rule.support_px) return false;  // on a moving grain
   // A grain at rest for long enough becomes static wherever it lies.
   if (rule.patience_cycles > 0 && rested >= rule.patience_cycles) return true;
   // paper §8.1: θ < α keeps grains on a too-steep static slope moving, so
   // the static layer never grows steeper than α.
-  return static_slope_rad(h, x, level, rule.baseline) < rule.slope_limit_rad;
+  return static_slope_rad(h, x, rule.baseline, rule.floor_px) < rule.slope_limit_rad;
 }
 
 bool becomes_fixed(const LayerHeights& h, const LayerRule& rule, double x, double y, double r) {

@@ -10,24 +10,29 @@
 //   the column. Our grains are 0.56-1.11 px wide: with centres only, most
 //   columns had no static grain, every neighbour looked like a cliff, and
 //   almost no grain ever passed the slope test (51 static of 2,550).
-// - The slope θ is the steepest drop from the static surface the grain rests
-//   on to H_s a few grain diameters to either side (`baseline` columns), not
-//   the signed mean (θ1 + θ2)/2 one column away: the mean is 0 on an apex (a
-//   narrow stream then built 50-65° spikes), and one column is grain-scale
-//   noise. The drop starts from the surface under the grain, not from the
-//   grain's own top: a grain stands about one layer (0.95 px) above the
-//   surface it rests on, which over 3 px read a 30° flank as 42° and a flat
-//   floor as 18°, and kept most of a pile's flank dynamic.
+// - The slope θ is the steepest drop of the static layer's outline, as it
+//   would be with the grain in it, from the grain's column to H_s a few grain
+//   diameters to either side (`baseline` columns), not the signed mean
+//   (θ1 + θ2)/2 one column away: the mean is 0 on an apex (a narrow stream
+//   then built 50-65° spikes), and one column is grain-scale noise. Tops
+//   against tops: the outline H_s is the grains' tops, so the drop starts
+//   from the grain's top (or H_s over its column, if higher), and the bare
+//   floor counts as a layer of the largest grains (`floor_px`), as high as a
+//   first layer's tops. We measured from the grain's bottom before: a grain
+//   nested in a flank has its bottom 0.3-1.1 px under the tops beside it, so
+//   over 4 columns the drop read up to 15° low and the static layer grew
+//   steeper than α (a 25° static core under verify-dem's quick heap at α
+//   9.2°). From the top, a grain lying on a flank instead of in it (a bump a
+//   grain high) stays dynamic: the layer grows by filling its surface and
+//   from the toe up.
 // - A grain becomes static only where it rests on the static layer (its
 //   bottom within `support_px` of H_s): a resting grain on top of a moving
 //   one stays dynamic, so the static layer grows from the floor up, whole.
 // - Rest is a displacement over a cycle, not the paper's 3×10⁻⁵ m/s (far
 //   below any solver's resting jitter).
-// - The surface a grain rests on is at most its own bottom: a static grain
-//   uphill whose outline reaches over the grain's columns (at a pile's toe,
-//   or beside any flank steeper than 30°) is beside it, not under it. (Read
-//   as a roof, as we did first, it made every grain that stopped beside a
-//   static flank static, however steep the flank.)
+// - Where a static grain uphill reaches over the grain's column (beside a
+//   flank), the level is that outline: the grain would extend the flank,
+//   and stays dynamic beside one steeper than α.
 // - α is the angle all-dynamic piles stand at unless the scene sets it
 //   (dem_slope_limit_deg), not the paper's fixed 30°.
 #include <cstddef>
@@ -58,6 +63,9 @@ struct LayerHeights {
   // Raise H_s (static) or H_f (fixed) to a grain's outline.
   void add_static(double x, double y, double r);
   void add_fixed(double x, double y, double r);
+  // H_s smoothed over columns j - 1 .. j + 1, a column lower than floor_px
+  // read as that high: the static surface at a grain's scale.
+  double surface(int j, double floor_px) const;
   // The lowest H_s within `reach` columns of j.
   double lowest_hs(int j, int reach) const;
 
@@ -65,10 +73,10 @@ struct LayerHeights {
   double highest(const std::vector<double>& layer, double x, double r) const;
 };
 
-// paper §8.1's θ(x, y): the steepest drop from the static surface at
-// `level` under a grain at x to H_s `baseline` columns to either side
-// (radians; negative in a hollow).
-double static_slope_rad(const LayerHeights& h, double x, double level, int baseline);
+// paper §8.1's θ(x, y): the steepest drop from `level` at a grain's column
+// to H_s `baseline` columns to either side, where a column lower than
+// `floor_px` counts as that high (radians; negative in a hollow).
+double static_slope_rad(const LayerHeights& h, double x, int baseline, double floor_px = 0);
 
 struct LayerRule {
   double rest_px = 0;             // at rest: moved less than this in a cycle
@@ -77,6 +85,7 @@ struct LayerRule {
   int baseline = 3;               // columns to either side for θ
   double support_px = 0;          // resting on the static layer: bottom at most this above H_s
   double band_px = 0;             // static layer thickness
+  double floor_px = 0;            // the bare floor counts as a layer this high (the largest diameter)
 };
 
 // Algorithm 2 lines 1-12: a dynamic grain of radius r at (x, y) that moved
