@@ -368,9 +368,11 @@ struct BenchFrictionCommand {
     auto sim = make_simulator(s);  // exit 2 in a build without Bullet
     std::fprintf(stderr, "sandpic bench-friction: %s\n", scene.reproduce(s).c_str());
     auto rows = run_friction_bench(s, opt, *sim, [](const FrictionBenchRow& r) {
-      std::fprintf(stderr, "  %-12s friction %.2f  seed %-6llu %7lld grains  %7.2f s  angle %5.1f°  silhouette error %.4f\n",
+      // A picture of many mountains has no heap angle: its scene slope then.
+      const bool heap = std::isfinite(r.angle_deg);
+      std::fprintf(stderr, "  %-12s friction %.2f  seed %-6llu %7lld grains  %7.2f s  %s %5.1f°  silhouette error %.4f\n",
                    r.layers.c_str(), r.friction, (unsigned long long)r.seed, (long long)r.grains, r.simulate_s,
-                   r.angle_deg, r.silhouette_error);
+                   heap ? "heap angle" : "scene slope", heap ? r.angle_deg : r.slope_deg, r.silhouette_error);
     });
     std::fputs(friction_bench_table(rows).c_str(), stdout);
     if (!csv.empty()) write_atomic(csv, friction_bench_csv(rows));

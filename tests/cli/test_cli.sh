@@ -230,6 +230,7 @@ if [ "$BULLET" = with-bullet ]; then
     --csv "$T/fig9.csv" --pictures "$T/fig9"
   is_png "$T/fig9/three-friction0.90-seed1.png"
   if [ "$(wc -l <"$T/fig9.csv")" = 3 ] && grep -q "three: the mean angle" "$T/out"; then ok; else bad "bench-friction: $(cat "$T/out")"; fi
+  err_has "heap angle"  # each run's line: a heap's angle (a picture of many mountains: its scene slope)
   expect 2 "bench-friction bad friction" -- "$BIN" bench-friction --friction 0.4,abc --csv "$T/f.csv"
   one_line; err_has "--friction"; absent "$T/f.csv"
   # calibrate writes a file a scene names; validate refuses a thin noise floor.
