@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 #include <queue>
+#include <utility>
 
 #include "physics/crowding.h"
 #include "physics/dem_cost.h"
@@ -450,11 +451,13 @@ void DemRun::freeze_stage() {
   if (layers_ == Layers::AllDynamic) return;
   // Lowest first: a grain is fixed only on fixed grains, so a stack buried
   // in one cycle is fixed in one cycle, each on the one fixed under it.
-  auto lowest_first = [&](std::vector<int32_t>& ids, auto height) {
-    std::sort(ids.begin(), ids.end(), [&](int32_t a, int32_t b) {
-      const double ha = height(a), hb = height(b);
-      return ha != hb ? ha < hb : a < b;
-    });
+  // Each height is read once, not at every comparison.
+  auto lowest_first = [](std::vector<int32_t>& ids, auto height) {
+    std::vector<std::pair<double, int32_t>> keyed;
+    keyed.reserve(ids.size());
+    for (int32_t id : ids) keyed.emplace_back(height(id), id);
+    std::sort(keyed.begin(), keyed.end());  // by height, then id
+    for (size_t i = 0; i < ids.size(); ++i) ids[i] = keyed[i].second;
   };
   lowest_first(statics_, [&](int32_t id) { return world_.position(slot_[size_t(id)]).y(); });
   lowest_first(still_statics_, [&](int32_t id) { return -double(y_[size_t(id)]); });
