@@ -10,29 +10,27 @@
 //   the column. Our grains are 0.56-1.11 px wide: with centres only, most
 //   columns had no static grain, every neighbour looked like a cliff, and
 //   almost no grain ever passed the slope test (51 static of 2,550).
-// - The slope θ is the steepest drop of the static layer's outline, as it
-//   would be with the grain in it, from the grain's column to H_s a few grain
-//   diameters to either side (`baseline` columns), not the signed mean
+// - The slope θ is the steepest drop of the static surface, H_s smoothed
+//   over 3 columns, from the grain's column to the same smoothed H_s a few
+//   grain diameters to either side (`baseline` columns), not the signed mean
 //   (θ1 + θ2)/2 one column away: the mean is 0 on an apex (a narrow stream
-//   then built 50-65° spikes), and one column is grain-scale noise. Tops
-//   against tops: the outline H_s is the grains' tops, so the drop starts
-//   from the grain's top (or H_s over its column, if higher), and the bare
-//   floor counts as a layer of the largest grains (`floor_px`), as high as a
-//   first layer's tops. We measured from the grain's bottom before: a grain
-//   nested in a flank has its bottom 0.3-1.1 px under the tops beside it, so
-//   over 4 columns the drop read up to 15° low and the static layer grew
-//   steeper than α (a 25° static core under verify-dem's quick heap at α
-//   9.2°). From the top, a grain lying on a flank instead of in it (a bump a
-//   grain high) stays dynamic: the layer grows by filling its surface and
-//   from the toe up.
+//   then built 50-65° spikes), and one column is grain-scale noise. Both
+//   ends are read alike, so the outline's dips between grains cancel, and
+//   the bare floor counts as a layer of the largest grains' tops
+//   (`floor_px`). We measured from the grain's bottom to H_s (the grains'
+//   tops) before: a grain nested in a flank has its bottom 0.3-1.1 px under
+//   the tops beside it, so over 4 columns the drop read up to 15° low and
+//   the static layer grew past α (17° under verify-dem's quick heap at α
+//   9.2°). From the grain's top, a grain lying on a flat static bed read as
+//   a 14° bump, and no new layer could start below that.
 // - A grain becomes static only where it rests on the static layer (its
 //   bottom within `support_px` of H_s): a resting grain on top of a moving
 //   one stays dynamic, so the static layer grows from the floor up, whole.
 // - Rest is a displacement over a cycle, not the paper's 3×10⁻⁵ m/s (far
 //   below any solver's resting jitter).
 // - Where a static grain uphill reaches over the grain's column (beside a
-//   flank), the level is that outline: the grain would extend the flank,
-//   and stays dynamic beside one steeper than α.
+//   flank), its outline is part of the surface there: the grain would
+//   extend the flank, and stays dynamic beside one steeper than α.
 // - α is the angle all-dynamic piles stand at unless the scene sets it
 //   (dem_slope_limit_deg), not the paper's fixed 30°.
 #include <cstddef>
@@ -73,9 +71,9 @@ struct LayerHeights {
   double highest(const std::vector<double>& layer, double x, double r) const;
 };
 
-// paper §8.1's θ(x, y): the steepest drop from `level` at a grain's column
-// to H_s `baseline` columns to either side, where a column lower than
-// `floor_px` counts as that high (radians; negative in a hollow).
+// paper §8.1's θ(x, y): the steepest drop of surface() from a grain's
+// column to `baseline` columns to either side (radians; negative in a
+// hollow).
 double static_slope_rad(const LayerHeights& h, double x, int baseline, double floor_px = 0);
 
 struct LayerRule {
