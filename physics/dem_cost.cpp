@@ -64,9 +64,9 @@ Cost dem_cost(const Scene& s) {
     fall_steps += (std::min(drop, simulated_fall_px(s, k, v)) - analytic) / v / dt / kClasses;
   }
   const double fall = 1 + fall_steps / (2631 * std::pow(grains / 14000, 0.75) * steps_ratio);
-  // The fits are for immovable static grains. A band of static bodies
-  // (dem.static_bodies) is solved with the flow: at --scale 0.2
-  // 5,362 body-steps a grain against 4,201, 1.4-1.5x the time.
+  // The fits are for immovable static grains (dem.static_bodies false).
+  // The default band of static bodies is solved with the flow: at --scale
+  // 0.2 5,362 body-steps a grain against 4,201, 1.4-1.5x the time.
   const double band = s.dem.layers == Layers::Three && s.dem.static_bodies ? 1.45 : 1.0;
   return {bytes + 2048 * bodies * (fall - 1), seconds * fall * band};
 }

@@ -195,7 +195,7 @@ struct Scene {
     double slope_margin_deg = 0;       // α from the piles: the all-dynamic heap angle plus this
     double slope_baseline_diameters = 4;  // θ measured this far to either side (largest grain diameters)
     double static_thickness_mm = 2;    // paper §8.1
-    bool static_bodies = false;        // paper §8.1: static grains stay in the simulation (docs/dem.md)
+    bool static_bodies = true;         // paper §8.1: static grains stay in the simulation (docs/dem.md)
     double static_reach_diameters = 0;  // and are bodies only this near the flow (largest diameters; 0: always)
     double simulated_fall_s = 20;      // paper §7: a body for this long before it lands (from its outlet at most)
     double max_overlap = 1.0;          // divergence: overlap beyond this (small-grain diameters)

@@ -785,8 +785,9 @@ std::vector<Field> make_fields() {
            "thickness of the static layer above the fixed one, mm (§8.1: 2)")
           .swept({times(0.5), times(2)}),
       boolean("dem.static_bodies", [](auto& s) -> auto& { return s.dem.static_bodies; },
-              "three: static grains stay bodies the flow can push, as §8.1 has them: heaps then stand near all-dynamic's "
-              "(false: immovable spheres, 1.4-1.6x fewer body-steps at --scale 0.2, but heaps stand too steep on them: docs/dem.md)"),
+              "three: static grains stay bodies the flow can push, as §8.1 has them, and pictures stand as all-dynamic's "
+              "(false: immovable spheres, 1.4-1.6x fewer body-steps at --scale 0.2, but the flow holds in their notches and "
+              "stands steeper: docs/dem.md)"),
       real("dem.static_reach_diameters", [](auto& s) -> auto& { return s.dem.static_reach_diameters; }, 0, 1e6,
            "with dem.static_bodies: a static grain is a body only while a dynamic grain is within this many "
            "largest-grain diameters, otherwise an immovable sphere: faster, steeper piles (0: no limit)"),

@@ -174,12 +174,12 @@ TINY=(--set window.width=60 --set window.height=60 --set region.height=5 --set s
 if [ "$BULLET" = with-bullet ]; then
   expect 0 "dem" -- "$BIN" render -o "$T/dem.png" --mode dem "${TINY[@]}" --stats "$T/dem.json" --stages "$T/dst"
   is_png "$T/dem.png"; is_png "$T/dst/6-layers.png"; is_png "$T/dst/7-layers-end.png"
-  expect 0 "dem static bodies" -- "$BIN" render -o "$T/demb.png" --mode dem "${TINY[@]}" --set dem.static_bodies=true \
+  expect 0 "dem immovable statics" -- "$BIN" render -o "$T/demb.png" --mode dem "${TINY[@]}" --set dem.static_bodies=false \
     --stages "$T/dstb" --frames "$T/dfb" --frame-count 3
   is_png "$T/demb.png"; is_png "$T/dstb/6-layers.png"; is_png "$T/dfb/frame-00002.png"
   # Static grains out of the flow's reach rest as spheres: the layer pictures
   # and the grain count still see them where they are.
-  expect 0 "dem static reach" -- "$BIN" render -o "$T/demr.png" --mode dem "${TINY[@]}" --set dem.static_bodies=true \
+  expect 0 "dem static reach" -- "$BIN" render -o "$T/demr.png" --mode dem "${TINY[@]}" \
     --set dem.static_reach_diameters=1 --stats "$T/demr.json" --stages "$T/dstr"
   is_png "$T/dstr/7-layers-end.png"
   if grep -q '"in_picture": 300' "$T/demr.json" && grep -q '"static_sleeps": [1-9]' "$T/demr.json"; then ok

@@ -259,6 +259,10 @@ TEST(DemSimulator, StatsSayWhereTheTimeWent) {
 // way the stats say how late grains became bodies.
 TEST(DemSimulator, GrainsAreBodiesFromTheirOutletDown) {
   Scene s = small_dem_scene(60);
+  // The fall's body-steps, on a pile of immovable static grains: with the
+  // default band of static bodies the pile's own body-steps swamp what a
+  // bounded fall adds (3,020 a grain bounded, 3,305 analytic).
+  s.dem.static_bodies = false;
   const RunResult fall = run(s);
   s.dem.simulated_fall_s = 0.1;  // the last 17 px of a large grain's fall, 4.5 px of a small one's
   const RunResult bounded = run(s);

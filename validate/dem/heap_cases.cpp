@@ -257,7 +257,8 @@ VerifyCase step(const VerifyOptions& opt) {
   VerifyCase c{"step", "Step convergence",
                "heaps at dem.step_diameters and at half of it, three-layer and all-dynamic, physics seeds " +
                    std::to_string(p.seeds.front()) + "–" + std::to_string(p.seeds.back()) +
-                   ": the mean heap angles differ by at most the larger seed spread (at least 1°), and the "
+                   ": the mean heap angles differ by no more than seeds alone would make them in 19 cases of 20 "
+                   "(Student's two-sample test at 95%, at least 1°), and the "
                    "silhouette error between the two steps (same seed) is at most 1.25× the larger seed-to-seed floor "
                    "(a better-converged solve lets a small heap grow by fewer, larger avalanches: its seeds differ more)"};
   const double step = Scene{}.dem.step_diameters;
@@ -284,8 +285,14 @@ VerifyCase step(const VerifyOptions& opt) {
       err += silhouette_error(base[i].class_map, half[i].class_map) / double(n);
     }
     const std::string name = layers_name(base->scene.dem.layers);
-    c.checks.push_back(within(name + ": mean heap angle at half the step (" + fmt("%.1f", mean(a)) + "° at the step)", mean(b),
-                              mean(a), std::max(1.0, std::max(spread(a), spread(b))), "°"));
+    // Student's test (mean_shift_limit): a limit of one seed spread failed
+    // a step that changes nothing a third of the time at two seeds. The
+    // test's limit is wide on two seeds (4.3 pooled spreads); a step that
+    // scatters the seeds is caught by the heap case's seed spread, and one
+    // that moves the pile by the outline below.
+    c.checks.push_back(within(name + ": mean heap angle at half the step (" + fmt("%.1f", mean(a)) + "° at the step, seed spreads " +
+                                  fmt("%.1f", spread(a)) + "° and " + fmt("%.1f", spread(b)) + "°)",
+                              mean(b), mean(a), std::max(1.0, mean_shift_limit(a, b)), "°"));
     // As the angles' spread: the floor of either step, whichever is larger.
     const double floor_base = floor_error(bases), floor_half = floor_error(halves);
     const double floor = std::max(floor_base, floor_half);
