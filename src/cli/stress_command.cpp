@@ -25,7 +25,7 @@ struct StressCommand {
         ->capture_default_str();
     cmd->add_option("--only", only, "case names, comma-separated (see stress.md for the list)");
     cmd->add_option("--timeout", opt.timeout_s, "seconds a run may take before it counts as a hang "
-                                                "(0: 600 quick, 1800 full)")
+                                                "(0: 1800)")
         ->check(CLI::Range(0.0, 1e6));
     cmd->callback([this] { run(); });
   }

@@ -69,7 +69,7 @@ struct StressOptions {
   bool quick = false;
   bool with_dem = true;
   std::vector<std::string> only;  // case names; empty: all
-  double timeout_s = 0;           // per run; 0: 600 s quick, 1800 s full
+  double timeout_s = 0;           // per run; 0: 1800 s
 };
 std::vector<StressRow> run_stress(const StressOptions& opt, const std::function<void(const StressRow&)>& done);
 
