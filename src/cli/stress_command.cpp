@@ -27,8 +27,8 @@ struct StressCommand {
     cmd->add_option("--timeout", opt.timeout_s, "seconds a run may take before it counts as a hang "
                                                 "(0: 1800)")
         ->check(CLI::Range(0.0, 1e6));
-    cmd->add_option("--jobs", opt.jobs, "runs at once, each a child process (0: one per core); a run's time grows "
-                                        "with what runs beside it")
+    cmd->add_option("--threads", opt.threads, "runs at once, each a child process (0: one per core); a run's time "
+                                              "grows with what runs beside it")
         ->check(CLI::Range(0, 1024));
     cmd->callback([this] { run(); });
   }

@@ -330,7 +330,7 @@ one_line; err_has "physics.friction"; err_has "line 1"; absent "$T/e.png"
 
 # The stress catalogue, a few cases of each kind (the whole quick
 # catalogue is a test of its own).
-expect 0 "stress" -- "$BIN" stress --quick --jobs 2 --out "$T/stress" --only json-nan,image-16bit,region-1px
+expect 0 "stress" -- "$BIN" stress --quick --threads 2 --out "$T/stress" --only json-nan,image-16bit,region-1px
 for f in stress.md stress.json; do if [ -s "$T/stress/$f" ]; then ok; else bad "stress wrote no $f"; fi; done
 if grep -q '| image-16bit | lattice | picture |' "$T/stress/stress.md"; then ok; else bad "stress.md lacks image-16bit"; fi
 if grep -q '"failed": 0' "$T/stress/stress.json"; then ok; else bad "stress.json reports failures"; fi

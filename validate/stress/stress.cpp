@@ -11,15 +11,17 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <sstream>
 #include <thread>
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 
 
 #include "src/errors.h"
@@ -411,34 +413,21 @@ std::vector<StressRow> run_stress(const StressOptions& opt, const std::function<
     const ChildRun run = run_child(argv, dir + "/stdout.txt", f.err, timeout);
     return judge(c, t.mode, run, f);
   };
-  // Runs side by side, each a child process in a folder of its own: a DEM
-  // run is one world on one core, and run one at a time the quick catalogue
-  // left the second core idle for 20 minutes of CI. The rows keep the
-  // catalogue's order whatever order the runs end in.
+  // Runs side by side on TBB's threads, each a child process in a folder of
+  // its own: a DEM run is one world on one core, and run one at a time the
+  // quick catalogue left the second core idle for 20 minutes of CI. The rows
+  // keep the catalogue's order whatever order the runs end in; an error
+  // starting a child cancels the runs not yet started and is rethrown.
+  std::unique_ptr<tbb::global_control> threads;
+  if (opt.threads > 0)
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, size_t(opt.threads));
   std::vector<StressRow> rows(tasks.size());
-  std::atomic<size_t> next{0};
   std::mutex m;
-  std::exception_ptr error;
-  auto worker = [&] {
-    for (size_t i; (i = next++) < tasks.size();) {
-      try {
-        rows[i] = run_one(tasks[i]);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(m);
-        if (!error) error = std::current_exception();
-        next = tasks.size();  // start no more
-        return;
-      }
-      std::lock_guard<std::mutex> lock(m);
-      if (done) done(rows[i]);
-    }
-  };
-  const int jobs = std::max(1, opt.jobs > 0 ? opt.jobs : int(std::thread::hardware_concurrency()));
-  std::vector<std::thread> pool;
-  for (int j = 1; j < std::min<int>(jobs, int(tasks.size())); ++j) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
+  tbb::parallel_for(size_t(0), tasks.size(), [&](size_t i) {
+    rows[i] = run_one(tasks[i]);
+    std::lock_guard<std::mutex> lock(m);
+    if (done) done(rows[i]);
+  });
   return rows;
 }
 

@@ -70,7 +70,7 @@ struct StressOptions {
   bool with_dem = true;
   std::vector<std::string> only;  // case names; empty: all
   double timeout_s = 0;           // per run; 0: 1800 s
-  int jobs = 0;                   // runs at once; 0: one per core
+  int threads = 0;                // runs at once; 0: one per core
 };
 std::vector<StressRow> run_stress(const StressOptions& opt, const std::function<void(const StressRow&)>& done);
 
