@@ -114,6 +114,7 @@ class DemRun {
   std::vector<int32_t> dynamic_, statics_, still_statics_, fixed_spheres_;
   std::vector<int> wedged_;  // slots of bodies pressed into a collider this cycle (classify_stage)
   double buried_px_ = 0;  // a sphere of fixed_spheres_ this far under H_s leaves for the ground
+  double trapped_px_ = 0;  // a dynamic grain this far under H_s is out of the flow's reach
   Arrivals arrivals_{16 / s_.dem.release_rate};  // about 16 grains leave per bucket
   std::vector<double> due_;     // per falling-order index: when the grain was due to become a body
   double late_sum_ = 0, late_max_ = 0;  // how much later than due grains became bodies (crowding)
@@ -173,11 +174,17 @@ DemRun::DemRun(const SimInput& in, Progress& progress)
   rule_.rest_px = s_.dem.rest_displacement * small_d_;
   rule_.patience_cycles = s_.dem.patience_cycles;
   rule_.slope_limit_rad = dem_slope_limit_deg(s_) * std::numbers::pi / 180;
-  rule_.band_px = s_.dem.static_thickness_mm * px_per_mm(s_);
   const double big_d = 2 * *std::max_element(radius_.begin(), radius_.end());
+  rule_.band_px = s_.dem.static_thickness_diameters * big_d;
   rule_.baseline = std::max(1, int(std::lround(s_.dem.slope_baseline_diameters * big_d)));
   rule_.floor_px = big_d;  // the bare floor reads as a first layer's tops
   buried_px_ = (layers_ == Layers::Three ? rule_.band_px : 0) + 2 * big_d;
+  // bcre's static layer is immovable: a dynamic grain a diameter under its
+  // surface lies in a cage of fixed spheres that the flow above presses it
+  // into. Left a body down to ten diameters (three's band) such grains were
+  // squeezed 0.12 small diameters into the cage on 300 grains at --scale 0.1
+  // (docs/notebook/2026-12-07-the-band-counts-in-grains.md).
+  trapped_px_ = layers_ == Layers::Three ? rule_.band_px : big_d;
   // Resting on the static layer: the bottom within a quarter of the smallest
   // diameter of H_s (overlap and the outline's rounding to columns).
   rule_.support_px = 0.25 * small_d_;
@@ -412,7 +419,7 @@ void DemRun::classify_stage() {
     // A grain buried under the static band (jostled, never quite at rest)
     // is out of reach of the flow, and a wedged one cannot get out: both
     // leave the simulation where they are (in bcre: join its static layer).
-    const bool trapped = p.y() + r < heights_.hs[size_t(heights_.column(p.x()))] - rule_.band_px ||
+    const bool trapped = p.y() + r < heights_.hs[size_t(heights_.column(p.x()))] - trapped_px_ ||
                          std::binary_search(wedged_.begin(), wedged_.end(), slot_[size_t(id)]);
     if (layers_ == Layers::Three && trapped) {
       ++settled_;

@@ -194,7 +194,9 @@ struct Scene {
     double slope_limit_deg = 0;        // paper §8.1's α for the steepest drop θ; 0: from the piles
     double slope_margin_deg = 0;       // α from the piles: the all-dynamic heap angle plus this
     double slope_baseline_diameters = 4;  // θ measured this far to either side (largest grain diameters)
-    double static_thickness_mm = 2;    // paper §8.1
+    // paper §8.1: 2 mm, ten of its 0.2 mm grains. In grains, so that --scale
+    // (coarser sand, docs/cli.md) keeps the band as many grains thick.
+    double static_thickness_diameters = 10;
     bool static_bodies = true;         // paper §8.1: static grains stay in the simulation (docs/dem.md)
     double static_reach_diameters = 0;  // and are bodies only this near the flow (largest diameters; 0: always)
     double simulated_fall_s = 20;      // paper §7: a body for this long before it lands (from its outlet at most)

@@ -781,8 +781,9 @@ std::vector<Field> make_fields() {
            "with dem.slope_limit_deg 0: α is the all-dynamic heap angle plus this"),
       real("dem.slope_baseline_diameters", [](auto& s) -> auto& { return s.dem.slope_baseline_diameters; }, 0.5, 1000,
            "§8.1's θ is the steepest drop to the static layer this far to either side, in the largest grain's diameters"),
-      real("dem.static_thickness_mm", [](auto& s) -> auto& { return s.dem.static_thickness_mm; }, 0, 1000,
-           "thickness of the static layer above the fixed one, mm (§8.1: 2)")
+      real("dem.static_thickness_diameters", [](auto& s) -> auto& { return s.dem.static_thickness_diameters; }, 0, 1e4,
+           "thickness of the static layer above the fixed one, in the largest grain's diameters (§8.1: 2 mm, ten "
+           "0.2 mm grains; thinner lets the flow stand steeper: docs/dem.md)")
           .swept({times(0.5), times(2)}),
       boolean("dem.static_bodies", [](auto& s) -> auto& { return s.dem.static_bodies; },
               "three: static grains stay bodies the flow can push, as §8.1 has them, and pictures stand as all-dynamic's "

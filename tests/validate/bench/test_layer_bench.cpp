@@ -14,7 +14,7 @@ TEST(LayerBench, EveryModelAtEveryCountWithItsErrorAgainstAllDynamic) {
   s.release.outlet_width_mm = 4;
   s.dem.patience_cycles = 3;  // the faster setting: see tests/physics/test_dem_simulator.cpp
   // Immovable static grains: a pile of 150 grains lies wholly inside the
-  // default band of static bodies (2 mm), and three-layer's run would be
+  // default band of static bodies (ten grains), and three-layer's run would be
   // all-dynamic's byte for byte (an error of 0, which this test rejects).
   s.dem.static_bodies = false;
   LayerBenchOptions opt;

@@ -71,7 +71,7 @@ TEST(Validation, RunsTheEnsembleKeepsItAndReportsEveryMetric) {
         "lattice.surface_px=2", "lattice.spot_busy_s=0.01", "lattice.picture_share=1,1,1.5,1.5",
         "lattice.arrival=release", "dem.layers=bcre", "dem.layers=all-dynamic", "dem.step_diameters=0.1",
         "dem.step_diameters=0.025", "dem.solver_iterations=5", "dem.solver_iterations=20", "dem.release_rate=2000",
-        "dem.release_rate=8000", "dem.static_thickness_mm=1", "dem.static_thickness_mm=4"})
+        "dem.release_rate=8000", "dem.static_thickness_diameters=5", "dem.static_thickness_diameters=20"})
     EXPECT_TRUE(swept(setting)) << setting;
   EXPECT_FALSE(v.heat_map.empty());
   for (const ValidationRun& d : v.dem) EXPECT_FALSE(d.cached);
