@@ -20,7 +20,9 @@
 #include <sstream>
 #include <thread>
 
+#include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
+#include <tbb/partitioner.h>
 #include <tbb/parallel_for.h>
 
 
@@ -439,11 +441,20 @@ std::vector<StressRow> run_stress(const StressOptions& opt, const std::function<
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, size_t(opt.threads));
   std::vector<StressRow> rows(tasks.size());
   std::mutex m;
-  tbb::parallel_for(size_t(0), tasks.size(), [&](size_t i) {
-    rows[i] = run_one(tasks[i]);
-    std::lock_guard<std::mutex> lock(m);
-    if (done) done(rows[i]);
-  });
+  // One run a task (simple_partitioner, grain 1): a run can take 2 s or 10
+  // minutes, and a chunk of neighbouring cases run on one thread held the
+  // quick catalogue's two longest (density-100:1, step-div10) one after the
+  // other while the second core sat idle.
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, tasks.size(), 1),
+      [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t i = range.begin(); i != range.end(); ++i) {
+          rows[i] = run_one(tasks[i]);
+          std::lock_guard<std::mutex> lock(m);
+          if (done) done(rows[i]);
+        }
+      },
+      tbb::simple_partitioner());
   return rows;
 }
 
