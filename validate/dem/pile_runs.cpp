@@ -6,7 +6,9 @@
 #include <map>
 #include <mutex>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 
 #include "physics/dem_params.h"
 #include "physics/dem_simulator.h"
@@ -93,8 +95,7 @@ std::vector<Run> run_all(std::vector<Scene> scenes, const VerifyOptions& opt, co
     else todo.push_back(i);
   }
   std::atomic<int> done{int(scenes.size() - todo.size())};
-  tbb::parallel_for(size_t(0), todo.size(), [&](size_t k) {
-    const size_t i = todo[k];
+  auto run_one = [&](size_t i) {
     auto sim = scenes[i].mode == Mode::Lammps ? make_lammps_simulator(LammpsOptions{}) : make_dem_simulator();
     RunResult r = run_pipeline(scenes[i], *sim, RunOptions{});
     runs[i] = {scenes[i], r.class_map, r.picture, r.stats, r.stats["timing"]["simulate_s"].get<double>()};
@@ -103,7 +104,16 @@ std::vector<Run> run_all(std::vector<Scene> scenes, const VerifyOptions& opt, co
       cache.runs.emplace(keys[i], runs[i]);
     }
     opt.log(what + ": " + std::to_string(++done) + "/" + std::to_string(scenes.size()) + " runs");
-  });
+  };
+  // One run a task (simple_partitioner, grain 1), as stress does: runs take
+  // 100-600 s, and the default partitioner's chunks can hold two long ones on
+  // one thread while the other core has nothing left.
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, todo.size(), 1),
+      [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t k = range.begin(); k != range.end(); ++k) run_one(todo[k]);
+      },
+      tbb::simple_partitioner());
   return runs;
 }
 
