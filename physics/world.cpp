@@ -7,6 +7,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "physics/grain_contact.h"
+#include "physics/grain_dynamics.h"
 #include "physics/grain_solver.h"
 #include "physics/ground.h"
 
@@ -57,7 +58,7 @@ struct GrainWorld::Impl {
   GrainContactCreateFunc grain_grain;  // physics/grain_contact.h
   btDbvtBroadphase broadphase;
   GrainSolver solver;  // physics/grain_solver.h
-  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
+  GrainDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};  // physics/grain_dynamics.h
 
   std::array<std::unique_ptr<btSphereShape>, kClasses> spheres;
   std::array<btVector3, kClasses> inertia;

@@ -256,7 +256,7 @@ VerifyCase step(const VerifyOptions& opt) {
   const Plan p = plan(opt);
   VerifyCase c{"step", "Step convergence",
                "heaps at dem.step_diameters and at half of it, three-layer and all-dynamic, physics seeds " +
-                   std::to_string(p.seeds.front()) + "–" + std::to_string(p.seeds.back()) +
+                   std::to_string(p.step_seeds.front()) + "–" + std::to_string(p.step_seeds.back()) +
                    ": the mean heap angles differ by no more than seeds alone would make them in 19 cases of 20 "
                    "(Student's two-sample test at 95%, at least 1°), and the "
                    "silhouette error between the two steps (same seed) is at most 1.25× the larger seed-to-seed floor "
@@ -266,13 +266,13 @@ VerifyCase step(const VerifyOptions& opt) {
   std::vector<Scene> scenes;
   for (Layers l : models)
     for (double f : {1.0, 0.5})
-      for (uint64_t seed : p.seeds) {
+      for (uint64_t seed : p.step_seeds) {
         Scene s = with(p.heap, l, Scene{}.physics.friction, Scene{}.dem.rolling_resistance, seed);
         s.dem.step_diameters = step * f;
         scenes.push_back(s);
       }
   const std::vector<Run> runs = run_all(scenes, opt, "step");
-  const size_t n = p.seeds.size();
+  const size_t n = p.step_seeds.size();
   for (size_t li = 0; li < models.size(); ++li) {
     const Run* base = &runs[li * 2 * n];
     const Run* half = base + n;
@@ -300,7 +300,7 @@ VerifyCase step(const VerifyOptions& opt) {
                                    fmt("%.4f", floor_base) + " at the step, " + fmt("%.4f", floor_half) + " at half)",
                                err / floor, 1.25, "×"));
     c.notes.push_back(name + ": " + fmt("%.0f", base->simulate_s) + " s at the step, " + fmt("%.0f", half->simulate_s) +
-                      " s at half of it (seed " + std::to_string(p.seeds.front()) + ")");
+                      " s at half of it (seed " + std::to_string(p.step_seeds.front()) + ")");
   }
   for (size_t li = 1; li < models.size(); ++li)
     c.checks.push_back(work_check(layers_name(models[li]), of(runs, models[li]), of(runs, Layers::AllDynamic)));

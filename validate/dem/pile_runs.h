@@ -19,6 +19,7 @@ namespace sandpic::verify {
 struct Plan {
   Scene heap;                          // a heap poured from a point
   std::vector<uint64_t> seeds;         // physics seeds
+  std::vector<uint64_t> step_seeds;    // the step case's
   double scene_scale;                  // the default scene's scale for the layers case
   double scene_region = 0;             // and its region's height (px; 0: as scaled)
   double spread_deg, layers_deg;       // tolerances: seed spread, three vs all-dynamic slope
