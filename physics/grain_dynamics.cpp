@@ -31,6 +31,8 @@ void GrainDynamicsWorld::integrateTransforms(btScalar dt) {
   }
 }
 
+// Every body and every contact in one call. The grains' world has no
+// joints (typed constraints): none are passed.
 void GrainDynamicsWorld::solveConstraints(btContactSolverInfo& info) {
   bodies_.resize(0);
   for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) bodies_.push_back(m_nonStaticRigidBodies[i]);
